@@ -1,0 +1,19 @@
+# Finds the four OpenCV parts zrender uses (core, imgproc, imgcodecs, videoio) from Debian's
+# libopencv-*-dev packages, which ship no OpenCVConfig.cmake (only the libopencv-dev meta package
+# does, and it pulls in about a hundred packages).
+find_path(OpenCVParts_INCLUDE_DIR opencv2/core.hpp PATH_SUFFIXES opencv4)
+set(_zr_parts core imgproc imgcodecs videoio)
+set(OpenCVParts_LIBRARIES)
+foreach(_part IN LISTS _zr_parts)
+  find_library(OpenCVParts_${_part}_LIBRARY NAMES opencv_${_part})
+  list(APPEND OpenCVParts_LIBRARIES ${OpenCVParts_${_part}_LIBRARY})
+  list(APPEND _zr_required OpenCVParts_${_part}_LIBRARY)
+endforeach()
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(OpenCVParts REQUIRED_VARS OpenCVParts_INCLUDE_DIR ${_zr_required})
+if(OpenCVParts_FOUND AND NOT TARGET OpenCV::Parts)
+  add_library(OpenCV::Parts INTERFACE IMPORTED)
+  set_target_properties(OpenCV::Parts PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${OpenCVParts_LIBRARIES}")
+endif()

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace zrender {
+
+struct Material {
+  std::string name;
+  cv::Vec3f diffuse{0.8f, 0.8f, 0.8f};  // Kd, linear 0..1, RGB order
+  std::string diffuseTexture;           // absolute or settings-relative path of map_Kd, "" if none
+};
+
+// One corner of a face: indices into Mesh::positions / texcoords / normals (0-based, already
+// resolved from OBJ's 1-based or negative form); -1 where the OBJ gave none.
+struct Corner {
+  int32_t position = -1;
+  int32_t texcoord = -1;
+  int32_t normal = -1;
+};
+
+// A polygon mesh as written in the file: one face per OBJ `f` line, in file order, so a face's
+// index is its face id (SPEC §6). Faces keep all their corners; triangulation happens later, in
+// window space, so concave faces are right.
+struct Mesh {
+  std::vector<cv::Vec3d> positions;  // model space
+  std::vector<cv::Vec2d> texcoords;  // u right, v up (OBJ convention)
+  std::vector<cv::Vec3d> normals;    // model space, as given (not necessarily unit length)
+  std::vector<Corner> corners;       // the corners of all faces, face after face
+  std::vector<uint32_t> faceStart;   // face f owns corners [faceStart[f], faceStart[f + 1])
+  std::vector<int32_t> faceMaterial;  // index into materials, -1 for none; one per face
+  std::vector<Material> materials;
+
+  size_t faceCount() const { return faceStart.empty() ? 0 : faceStart.size() - 1; }
+  uint32_t cornerCount(size_t face) const { return faceStart[face + 1] - faceStart[face]; }
+  const Corner* faceCorners(size_t face) const { return corners.data() + faceStart[face]; }
+  bool hasNormals() const { return !normals.empty(); }
+  bool hasTexcoords() const { return !texcoords.empty(); }
+};
+
+}  // namespace zrender

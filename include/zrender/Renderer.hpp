@@ -1,0 +1,59 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/Camera.hpp"
+#include "zrender/FrameBuffer.hpp"
+#include "zrender/FrameGeometry.hpp"
+#include "zrender/RenderStats.hpp"
+#include "zrender/Scene.hpp"
+#include "zrender/Shader.hpp"
+#include "zrender/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+
+// Timings of one frame, milliseconds (SPEC §7).
+struct FrameTimings {
+  double transformMs = 0.0;  // vertices to window-space faces, culling, clipping
+  double rasterMs = 0.0;     // window-space faces to filled buffers (visibility and shading)
+  double frameMs() const { return transformMs + rasterMs; }
+};
+
+// Renders frames of one scene with one algorithm. Model-only work (prepare) happens once in
+// the constructor; buffers are reused from frame to frame.
+class Renderer {
+ public:
+  Renderer(const Scene& scene, const std::string& algorithm);
+
+  // Renders one frame; the results stay valid until the next call.
+  FrameTimings renderFrame(const Camera& camera);
+
+  double prepareMs() const { return prepareMs_; }
+  int sampleScale() const { return sampleScale_; }
+  const FrameBuffer& buffer() const { return buffer_; }
+  const cv::Mat& color() const { return color_; }
+  const RenderStats& stats() const { return stats_; }
+  const VisibilityAlgorithm& algorithm() const { return *algorithm_; }
+
+ private:
+  const Scene& scene_;
+  std::unique_ptr<VisibilityAlgorithm> algorithm_;
+  Shader shader_;
+  int sampleScale_;
+  double prepareMs_ = 0.0;
+  FrameBuffer buffer_;
+  FrameGeometry geometry_;
+  cv::Mat color_;
+  RenderStats stats_;
+};
+
+// Milliseconds since an arbitrary start (steady clock).
+double nowMs();
+
+// Peak resident set size of this process, MB.
+double peakRssMb();
+
+}  // namespace zrender

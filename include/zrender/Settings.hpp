@@ -1,0 +1,71 @@
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/Error.hpp"
+#include "zrender/Shading.hpp"
+
+namespace zrender {
+
+constexpr int kMaxImageSize = 16384;  // pixels, per side (SPEC §2)
+
+// The model repeated as instances (SPEC §3 `grid`).
+struct Grid {
+  std::array<int, 3> count{1, 1, 1};          // nx, ny, nz >= 1
+  cv::Vec3d spacing{0.0, 0.0, 0.0};           // model units
+  int instanceCount() const { return count[0] * count[1] * count[2]; }
+};
+
+// One scene of settings.json with every default of SPEC §3 filled in.
+struct SceneSettings {
+  std::string name;
+  std::filesystem::path modelPath;             // resolved against the settings file's folder
+  int width = 1024;                            // pixels, 1..16384
+  int height = 1024;
+  std::optional<cv::Vec3d> eye;                // world space; required unless fit is on
+  cv::Vec3d target{0.0, 0.0, 0.0};
+  cv::Vec3d up{0.0, 1.0, 0.0};
+  double angle = 0.0;                          // degrees about axis
+  cv::Vec3d axis{0.0, 1.0, 0.0};
+  double fovy = 45.0;                          // degrees, in (0, 180)
+  double aspect = 0.0;                         // <= 0 means width / height
+  double near = 0.1;                           // > 0 (sign of the file's value ignored)
+  double far = 100.0;                          // > near
+  bool fit = false;
+  ShadingMode shading = ShadingMode::Normal;
+  int msaa = 1;                                // 1 or 4
+  bool cull = true;
+  std::optional<std::filesystem::path> texture;  // overrides the material's map_Kd
+  std::array<int, 3> background{0, 0, 0};     // r, g, b in 0..255
+  std::optional<Grid> grid;
+  bool bench = false;
+};
+
+struct SettingsFile {
+  std::filesystem::path path;
+  std::map<std::string, SceneSettings> scenes;  // sorted by name
+};
+
+// Parses and validates a settings file. Throws InputError "FILE: bad JSON: ..." or
+// "FILE: scene 'NAME': key 'KEY': <what is wrong>"; adds a warning for each unknown key.
+SettingsFile loadSettings(const std::filesystem::path& path, Warnings& warnings);
+
+// Same, from text already read (`path` is used for messages and to resolve model paths).
+SettingsFile parseSettings(const std::string& text, const std::filesystem::path& path,
+                           Warnings& warnings);
+
+// The scene used when SCENE is a model file rather than a settings key: defaults and fit.
+SceneSettings defaultSceneForModel(const std::filesystem::path& modelPath);
+
+// Checks the cross-key rules (size range, near < far, fov range, eye present unless fit, ...)
+// after command-line overrides; `where` prefixes messages ("settings.json: scene 'bunny'" or
+// "command line"). Throws InputError.
+void validateScene(const SceneSettings& scene, const std::string& where);
+
+}  // namespace zrender

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/Camera.hpp"
+#include "zrender/FrameBuffer.hpp"
+#include "zrender/Scene.hpp"
+#include "zrender/Shading.hpp"
+
+namespace zrender {
+
+// Deferred shading (SPEC §6): turns the visibility buffer into colors. A sample's color depends
+// only on its face id, its position and the scene, never on the algorithm that found it, so
+// identical visibility buffers give identical images. Attributes are interpolated
+// perspective-correctly by intersecting the sample's view ray with the face in view space.
+class Shader {
+ public:
+  Shader(const Scene& scene, ShadingMode mode);
+
+  // Fills `color` (CV_8UC3, BGR, pixels) from `fb` (samples; sampleScale 2 = MSAA 4, whose
+  // pixel is the rounded mean of its four samples' colors, background included).
+  void shade(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color);
+
+ private:
+  struct FaceCache {
+    uint32_t stamp = 0;  // frame in which the entry was computed
+    uint32_t data = 0;   // packed BGR color, or index into faceShade_ for per-sample modes
+  };
+  struct FaceShade {   // view-space data of one face for per-sample interpolation
+    uint32_t first;    // into cornerPos_/cornerNormal_/cornerUv_
+    uint32_t count;
+    bool flip;         // back-facing: light the other side
+    cv::Vec3f base;    // material diffuse color, RGB 0..1
+  };
+
+  uint32_t faceColor(uint32_t faceId);
+  uint32_t faceShadeIndex(uint32_t faceId);
+  cv::Vec3b shadeSample(uint32_t faceId, const Vec3& rayDir);
+  cv::Vec3f sampleTexture(const cv::Vec2d& uv) const;
+
+  const Scene& scene_;
+  ShadingMode mode_;
+  std::vector<Vec3> faceNormals_;    // model space, per local face (Newell, unit or zero)
+  std::vector<Vec3> smoothNormals_;  // model space, per position, when the model has no vn
+  bool perSample_ = false;
+
+  // Per-frame state.
+  uint32_t frame_ = 0;
+  std::vector<FaceCache> cache_;
+  std::vector<FaceShade> faceShade_;
+  std::vector<Vec3> cornerPos_, cornerNormal_;
+  std::vector<cv::Vec2d> cornerUv_;
+  std::vector<Mat4> modelView_;  // per instance
+};
+
+// A fixed pseudo-random color per face id (SPEC §6 `random`), packed as 0x00RRGGBB.
+uint32_t randomFaceColor(uint32_t faceId);
+
+}  // namespace zrender

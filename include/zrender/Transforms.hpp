@@ -1,0 +1,37 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+namespace zrender {
+
+// 4x4 matrices act on column vectors (p' = M * p), as in OpenGL.
+using Mat4 = cv::Matx44d;
+using Vec3 = cv::Vec3d;
+using Vec4 = cv::Vec4d;
+
+// Rotation of `degrees` about the (normalized) `axis` through the origin, right-hand rule.
+Mat4 rotation(double degrees, const Vec3& axis);
+Mat4 translation(const Vec3& offset);
+
+// gluLookAt: world to view space; the camera looks down its -Z, `up` projects to +Y.
+Mat4 lookAt(const Vec3& eye, const Vec3& target, const Vec3& up);
+
+// gluPerspective: view to clip space; fovy in degrees, near and far positive distances.
+Mat4 perspective(double fovyDegrees, double aspect, double near, double far);
+
+// Window position of a clip-space point with w > 0, in pixels: x right, y down, row 0 at the
+// top (SPEC §4); z is window depth in 0..1, smaller is nearer.
+Vec3 clipToWindow(const Vec4& clip, int width, int height);
+
+inline Vec3 transformPoint(const Mat4& m, const Vec3& p) {
+  const Vec4 r = m * Vec4(p[0], p[1], p[2], 1.0);
+  return Vec3(r[0], r[1], r[2]);
+}
+
+inline Vec3 transformDirection(const Mat4& m, const Vec3& d) {
+  return Vec3(m(0, 0) * d[0] + m(0, 1) * d[1] + m(0, 2) * d[2],
+              m(1, 0) * d[0] + m(1, 1) * d[1] + m(1, 2) * d[2],
+              m(2, 0) * d[0] + m(2, 1) * d[1] + m(2, 2) * d[2]);
+}
+
+}  // namespace zrender

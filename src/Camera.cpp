@@ -1,0 +1,38 @@
+#include "zrender/Camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace zrender {
+
+Camera makeCamera(const Scene& scene) {
+  const SceneSettings& s = scene.settings;
+  Camera cam;
+  cam.width = s.width;
+  cam.height = s.height;
+  cam.fovy = s.fovy;
+  cam.aspect = s.aspect > 0.0 ? s.aspect : double(s.width) / double(s.height);
+  cam.near = s.near;
+  cam.far = s.far;
+  cam.up = s.up;
+  cam.target = s.target;
+  cam.eye = s.eye ? *s.eye : s.target + Vec3(0, 0, 1);
+
+  if (s.fit) {
+    const Vec3 dir = cv::normalize(cam.target - cam.eye);
+    const double r = std::max(scene.boundsRadius, 1e-9) * 1.05;  // 5% margin
+    const double halfY = s.fovy * CV_PI / 360.0;
+    const double halfX = std::atan(std::tan(halfY) * cam.aspect);
+    const double half = std::min(halfY, halfX);
+    const double distance = r / std::sin(half);
+    cam.target = scene.boundsCentre;
+    cam.eye = cam.target - dir * distance;
+    cam.near = std::max(distance - r, distance * 1e-3);
+    cam.far = distance + r;
+  }
+  cam.view = lookAt(cam.eye, cam.target, cam.up);
+  cam.projection = perspective(cam.fovy, cam.aspect, cam.near, cam.far);
+  return cam;
+}
+
+}  // namespace zrender

@@ -1,0 +1,112 @@
+#include "zrender/ImageOutput.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <string>
+#include <system_error>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "zrender/Error.hpp"
+
+namespace zrender {
+
+namespace {
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+// The nearest of a pixel's samples (its smallest key).
+DepthKey pixelKey(const FrameBuffer& fb, int scale, int x, int y) {
+  if (scale == 1) return fb.row(y)[x];
+  const DepthKey* r0 = fb.row(2 * y);
+  const DepthKey* r1 = fb.row(2 * y + 1);
+  return std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]});
+}
+
+}  // namespace
+
+std::initializer_list<const char*> colorExtensions() {
+  static const std::initializer_list<const char*> list = {".png", ".jpg", ".jpeg", ".bmp",
+                                                          ".ppm", ".tif", ".tiff"};
+  return list;
+}
+
+void checkOutputExtension(const std::filesystem::path& path,
+                          std::initializer_list<const char*> allowed, const char* what) {
+  const std::string ext = lowerExtension(path);
+  std::string list;
+  for (const char* a : allowed) {
+    if (ext == a) return;
+    list += (list.empty() ? "" : " ") + std::string(a);
+  }
+  throw InputError(path.string() + ": unsupported " + what + " format '" + ext +
+                   "' (use " + list + ")");
+}
+
+void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path parent = path.parent_path();
+  if (!parent.empty()) {
+    fs::create_directories(parent, ec);
+    if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
+  }
+  // Same folder (so rename is atomic), same extension (imwrite picks the codec from it).
+  const fs::path tmp = parent / ("." + path.stem().string() + ".tmp-" +
+                                 std::to_string(::getpid()) + path.extension().string());
+  bool ok = false;
+  std::string reason = "cannot write file";
+  try {
+    ok = cv::imwrite(tmp.string(), image);
+  } catch (const cv::Exception& e) {
+    reason = "cannot encode image: " + e.msg;
+    reason.erase(std::remove(reason.begin(), reason.end(), '\n'), reason.end());
+  }
+  if (!ok) {
+    fs::remove(tmp, ec);
+    throw InputError(path.string() + ": " + reason);
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw InputError(path.string() + ": cannot replace file: " + ec.message());
+  }
+}
+
+cv::Mat depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
+  const int width = fb.width() / scale, height = fb.height() / scale;
+  cv::Mat out(height, width, sixteenBit ? CV_16UC1 : CV_32FC1);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float d = keyDepth(pixelKey(fb, scale, x, y));
+      if (sixteenBit) out.at<uint16_t>(y, x) = uint16_t(std::lround(double(d) * 65535.0));
+      else out.at<float>(y, x) = d;
+    }
+  }
+  return out;
+}
+
+cv::Mat idImage(const FrameBuffer& fb, int scale) {
+  const int width = fb.width() / scale, height = fb.height() / scale;
+  cv::Mat out(height, width, CV_8UC3);
+  for (int y = 0; y < height; ++y) {
+    uchar* p = out.ptr<uchar>(y);
+    for (int x = 0; x < width; ++x) {
+      const uint32_t v = keyFaceId(pixelKey(fb, scale, x, y)) + 1;  // background wraps to 0
+      p[3 * x + 2] = uchar(v);        // R: low byte
+      p[3 * x + 1] = uchar(v >> 8);   // G: middle byte
+      p[3 * x + 0] = uchar(v >> 16);  // B: high byte
+    }
+  }
+  return out;
+}
+
+}  // namespace zrender

@@ -1,0 +1,59 @@
+#include "zrender/Renderer.hpp"
+
+#include <sys/resource.h>
+
+#include <chrono>
+
+#include "zrender/FaceTransformer.hpp"
+
+namespace zrender {
+
+double nowMs() {
+  using namespace std::chrono;
+  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+double peakRssMb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+Renderer::Renderer(const Scene& scene, const std::string& algorithm)
+    : scene_(scene),
+      algorithm_(makeAlgorithm(algorithm)),
+      shader_(scene, scene.settings.shading),
+      sampleScale_(scene.settings.msaa == 4 ? 2 : 1) {
+  const double t0 = nowMs();
+  algorithm_->prepare(scene);
+  prepareMs_ = nowMs() - t0;
+}
+
+FrameTimings Renderer::renderFrame(const Camera& camera) {
+  FrameTimings timings;
+  stats_ = RenderStats();
+  geometry_.clear();
+  geometry_.width = camera.width * sampleScale_;
+  geometry_.height = camera.height * sampleScale_;
+
+  const double t0 = nowMs();
+  FaceTransformer transformer(scene_, camera, sampleScale_, scene_.settings.cull);
+  if (algorithm_->transformsAll()) transformer.transformAll(geometry_);
+  const double t1 = nowMs();
+
+  buffer_.resize(geometry_.width, geometry_.height);
+  FrameInput input{scene_, camera, transformer, geometry_};
+  algorithm_->render(input, buffer_, stats_);
+  shader_.shade(buffer_, camera, sampleScale_, color_);
+  const double t2 = nowMs();
+
+  // Lazy algorithms transform inside render(); book that time as transform.
+  timings.transformMs = (t1 - t0) + stats_.lazyTransformMs;
+  timings.rasterMs = (t2 - t1) - stats_.lazyTransformMs;
+  stats_.trianglesBackfaceCulled = geometry_.counters.backfaceCulled;
+  stats_.trianglesClippedAway = geometry_.counters.clippedAway;
+  stats_.trianglesDegenerate = geometry_.counters.degenerate;
+  return timings;
+}
+
+}  // namespace zrender

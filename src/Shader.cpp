@@ -1,0 +1,318 @@
+#include "zrender/Shader.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace zrender {
+
+namespace {
+
+// Packs an RGB color in 0..1 as 0x00RRGGBB, rounding to nearest.
+uint32_t packRgb(double r, double g, double b) {
+  auto q = [](double v) { return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+  return (q(r) << 16) | (q(g) << 8) | q(b);
+}
+
+// Newell normal of a face's corners (model space), normalized; zero for a degenerate face.
+Vec3 newellNormal(const Mesh& mesh, size_t face) {
+  const Corner* c = mesh.faceCorners(face);
+  const uint32_t n = mesh.cornerCount(face);
+  Vec3 normal(0, 0, 0);
+  for (uint32_t i = 0; i < n; ++i) {
+    const Vec3& p = mesh.positions[size_t(c[i].position)];
+    const Vec3& q = mesh.positions[size_t(c[(i + 1) % n].position)];
+    normal += Vec3((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
+                   (p[0] - q[0]) * (p[1] + q[1]));
+  }
+  const double len = cv::norm(normal);
+  return len > 0.0 ? normal / len : Vec3(0, 0, 0);
+}
+
+Vec3 safeNormalize(const Vec3& v) {
+  const double len = cv::norm(v);
+  return len > 0.0 ? v / len : Vec3(0, 0, 1);
+}
+
+// Blinn–Phong with the light at the eye (so L = V = H), in 0..1 RGB.
+cv::Vec3f blinnPhong(const cv::Vec3f& base, const Vec3& n, const Vec3& toEye) {
+  const double diffuse = std::max(0.0, n.dot(toEye));
+  const double specular = std::pow(diffuse, 64.0);
+  const double ambient = 0.1;
+  cv::Vec3f c;
+  for (int i = 0; i < 3; ++i)
+    c[i] = float(base[i] * (ambient + (1.0 - ambient) * diffuse) + 0.3 * specular);
+  return c;
+}
+
+}  // namespace
+
+uint32_t randomFaceColor(uint32_t faceId) {
+  // splitmix32-style finalizer: neighbouring ids get unrelated colors.
+  uint32_t h = faceId * 0x9E3779B9u + 0x7F4A7C15u;
+  h = (h ^ (h >> 16)) * 0x85EBCA6Bu;
+  h = (h ^ (h >> 13)) * 0xC2B2AE35u;
+  h ^= h >> 16;
+  // Keep colors away from black so faces stand out from the default background.
+  return (h & 0x00FFFFFFu) | 0x00303030u;
+}
+
+Shader::Shader(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode) {
+  const Mesh& mesh = *scene.mesh;
+  faceNormals_.resize(mesh.faceCount());
+  for (size_t f = 0; f < mesh.faceCount(); ++f) faceNormals_[f] = newellNormal(mesh, f);
+  perSample_ = mode == ShadingMode::Phong || mode == ShadingMode::Texture ||
+               (mode == ShadingMode::Normal && mesh.hasNormals());
+  if ((mode == ShadingMode::Phong || mode == ShadingMode::Texture) && !mesh.hasNormals()) {
+    // Smooth normals: area-weighted sum of the normals of the faces around each position.
+    smoothNormals_.assign(mesh.positions.size(), Vec3(0, 0, 0));
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const Corner* c = mesh.faceCorners(f);
+      const uint32_t n = mesh.cornerCount(f);
+      Vec3 weighted(0, 0, 0);
+      for (uint32_t i = 0; i < n; ++i) {
+        const Vec3& p = mesh.positions[size_t(c[i].position)];
+        const Vec3& q = mesh.positions[size_t(c[(i + 1) % n].position)];
+        weighted += Vec3((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
+                         (p[0] - q[0]) * (p[1] + q[1]));
+      }
+      for (uint32_t i = 0; i < n; ++i) smoothNormals_[size_t(c[i].position)] += weighted;
+    }
+    for (Vec3& n : smoothNormals_) n = safeNormalize(n);
+  }
+}
+
+uint32_t Shader::faceColor(uint32_t faceId) {
+  FaceCache& entry = cache_[faceId];
+  if (entry.stamp == frame_) return entry.data;
+  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
+  const uint32_t instance = faceId / nf, local = faceId % nf;
+  uint32_t color = 0;
+  switch (mode_) {
+    case ShadingMode::Id: {
+      const uint32_t v = faceId + 1;  // R = low byte, G = middle, B = high (SPEC §6)
+      color = ((v & 0xFF) << 16) | (((v >> 8) & 0xFF) << 8) | ((v >> 16) & 0xFF);
+      break;
+    }
+    case ShadingMode::Random:
+      color = randomFaceColor(faceId);
+      break;
+    case ShadingMode::Normal: {
+      const Vec3 n = safeNormalize(transformDirection(modelView_[instance], faceNormals_[local]));
+      color = packRgb((n[0] + 1) * 0.5, (n[1] + 1) * 0.5, (n[2] + 1) * 0.5);
+      if (faceNormals_[local] == Vec3(0, 0, 0)) color = packRgb(0.5, 0.5, 0.5);
+      break;
+    }
+    case ShadingMode::Flat: {
+      // Lambert term of the face normal under a light at the eye, seen from the centroid.
+      const Mesh& mesh = *scene_.mesh;
+      const Corner* c = mesh.faceCorners(local);
+      const uint32_t n = mesh.cornerCount(local);
+      Vec3 centroid(0, 0, 0);
+      for (uint32_t i = 0; i < n; ++i) centroid += mesh.positions[size_t(c[i].position)];
+      centroid *= 1.0 / std::max<uint32_t>(n, 1);
+      const Vec3 p = transformPoint(modelView_[instance], centroid);
+      const Vec3 normal = transformDirection(modelView_[instance], faceNormals_[local]);
+      const double g = std::abs(normal.dot(safeNormalize(-p)));
+      color = packRgb(g, g, g);
+      break;
+    }
+    default:
+      break;
+  }
+  entry.stamp = frame_;
+  entry.data = color;
+  return color;
+}
+
+uint32_t Shader::faceShadeIndex(uint32_t faceId) {
+  FaceCache& entry = cache_[faceId];
+  if (entry.stamp == frame_) return entry.data;
+  const Mesh& mesh = *scene_.mesh;
+  const uint32_t nf = uint32_t(mesh.faceCount());
+  const uint32_t instance = faceId / nf, local = faceId % nf;
+  const Mat4& mv = modelView_[instance];
+  const Corner* c = mesh.faceCorners(local);
+  const uint32_t n = mesh.cornerCount(local);
+  FaceShade fs;
+  fs.first = uint32_t(cornerPos_.size());
+  fs.count = n;
+  bool allNormals = mesh.hasNormals(), allUvs = mesh.hasTexcoords();
+  for (uint32_t i = 0; i < n; ++i) {
+    allNormals &= c[i].normal >= 0;
+    allUvs &= c[i].texcoord >= 0;
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    cornerPos_.push_back(transformPoint(mv, mesh.positions[size_t(c[i].position)]));
+    Vec3 normal;
+    if (allNormals) normal = mesh.normals[size_t(c[i].normal)];
+    else if (!smoothNormals_.empty()) normal = smoothNormals_[size_t(c[i].position)];
+    else normal = faceNormals_[local];
+    cornerNormal_.push_back(safeNormalize(transformDirection(mv, normal)));
+    cornerUv_.push_back(allUvs ? mesh.texcoords[size_t(c[i].texcoord)] : cv::Vec2d(0, 0));
+  }
+  const Vec3 geometric = transformDirection(mv, faceNormals_[local]);
+  fs.flip = geometric.dot(-cornerPos_[fs.first]) < 0.0;
+  const int32_t material = local < mesh.faceMaterial.size() ? mesh.faceMaterial[local] : -1;
+  fs.base = material >= 0 ? mesh.materials[size_t(material)].diffuse : cv::Vec3f(0.8f, 0.8f, 0.8f);
+  if (mode_ == ShadingMode::Texture && !scene_.texture.empty() && allUvs)
+    fs.base = cv::Vec3f(-1, -1, -1);  // marker: sample the texture
+  entry.stamp = frame_;
+  entry.data = uint32_t(faceShade_.size());
+  faceShade_.push_back(fs);
+  return entry.data;
+}
+
+cv::Vec3f Shader::sampleTexture(const cv::Vec2d& uv) const {
+  // Bilinear, wrapping; v = 0 is the bottom row of the image (OBJ convention).
+  const cv::Mat& t = scene_.texture;
+  const double u = uv[0] - std::floor(uv[0]), v = uv[1] - std::floor(uv[1]);
+  const double x = u * t.cols - 0.5, y = (1.0 - v) * t.rows - 0.5;
+  const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+  const double fx = x - x0, fy = y - y0;
+  auto at = [&](int xi, int yi) {
+    xi = ((xi % t.cols) + t.cols) % t.cols;
+    yi = ((yi % t.rows) + t.rows) % t.rows;
+    return t.at<cv::Vec3b>(yi, xi);
+  };
+  const cv::Vec3b a = at(x0, y0), b = at(x0 + 1, y0), c = at(x0, y0 + 1), d = at(x0 + 1, y0 + 1);
+  cv::Vec3f rgb;
+  for (int i = 0; i < 3; ++i) {
+    const double top = a[2 - i] * (1 - fx) + b[2 - i] * fx;
+    const double bottom = c[2 - i] * (1 - fx) + d[2 - i] * fx;
+    rgb[i] = float((top * (1 - fy) + bottom * fy) / 255.0);
+  }
+  return rgb;
+}
+
+cv::Vec3b Shader::shadeSample(uint32_t faceId, const Vec3& dir) {
+  const FaceShade& fs = faceShade_[faceShadeIndex(faceId)];
+  const Vec3* pos = cornerPos_.data() + fs.first;
+  // Intersect the view ray (from the eye at the origin) with the fan triangles of the face;
+  // take the first that contains the hit, else the one it misses least.
+  double bestU = 0, bestV = 0, bestT = 1, bestMiss = HUGE_VAL;
+  uint32_t best = 1;
+  for (uint32_t j = 1; j + 1 < fs.count; ++j) {
+    const Vec3 e1 = pos[j] - pos[0], e2 = pos[j + 1] - pos[0];
+    const Vec3 pvec = dir.cross(e2);
+    const double det = e1.dot(pvec);
+    if (det == 0.0) continue;
+    const Vec3 tvec = -pos[0];
+    const double u = tvec.dot(pvec) / det;
+    const Vec3 qvec = tvec.cross(e1);
+    const double v = dir.dot(qvec) / det;
+    const double t = e2.dot(qvec) / det;
+    const double miss = std::max({-u, -v, u + v - 1.0, 0.0});
+    if (miss < bestMiss) {
+      bestMiss = miss, bestU = u, bestV = v, bestT = t, best = j;
+      if (miss == 0.0) break;
+    }
+  }
+  // Samples just outside a face (its snapped edge) get the nearest point's attributes.
+  double u = std::max(bestU, 0.0), v = std::max(bestV, 0.0);
+  if (u + v > 1.0) {
+    const double s = u + v;
+    u /= s, v /= s;
+  }
+  const double w0 = 1.0 - u - v;
+  const uint32_t i1 = fs.first + best, i2 = fs.first + best + 1;
+  Vec3 n = cornerNormal_[fs.first] * w0 + cornerNormal_[i1] * u + cornerNormal_[i2] * v;
+  n = safeNormalize(n);
+  cv::Vec3f rgb;
+  if (mode_ == ShadingMode::Normal) {
+    rgb = cv::Vec3f(float((n[0] + 1) * 0.5), float((n[1] + 1) * 0.5), float((n[2] + 1) * 0.5));
+  } else {
+    if (fs.flip) n = -n;
+    cv::Vec3f base = fs.base;
+    if (base[0] < 0.0f) {
+      const cv::Vec2d uv = cornerUv_[fs.first] * w0 + cornerUv_[i1] * u + cornerUv_[i2] * v;
+      base = sampleTexture(uv);
+    }
+    const Vec3 toEye = safeNormalize(-(dir * bestT));
+    rgb = blinnPhong(base, n, toEye);
+  }
+  auto q = [](float c) { return uchar(std::lround(std::clamp(c, 0.0f, 1.0f) * 255.0f)); };
+  return cv::Vec3b(q(rgb[2]), q(rgb[1]), q(rgb[0]));
+}
+
+void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
+  const int width = fb.width() / scale, height = fb.height() / scale;
+  color.create(height, width, CV_8UC3);
+  if (cache_.size() != scene_.faceCount()) {
+    cache_.assign(scene_.faceCount(), FaceCache());
+    frame_ = 0;
+  }
+  ++frame_;
+  faceShade_.clear();
+  cornerPos_.clear();
+  cornerNormal_.clear();
+  cornerUv_.clear();
+  modelView_.clear();
+  for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
+    modelView_.push_back(camera.view * scene_.modelMatrix(k));
+
+  const auto& bg = scene_.settings.background;
+  const uint32_t background = (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
+
+  float depthLo = 1.0f, depthHi = 0.0f;
+  if (mode_ == ShadingMode::Depth) {
+    for (size_t i = 0; i < fb.size(); ++i) {
+      if (keyFaceId(fb.data()[i]) == kBackgroundId) continue;
+      const float d = keyDepth(fb.data()[i]);
+      depthLo = std::min(depthLo, d);
+      depthHi = std::max(depthHi, d);
+    }
+  }
+  const double depthRange = depthHi > depthLo ? double(depthHi) - depthLo : 1.0;
+
+  // View-space ray through a sample centre: x_view / -z_view = x_ndc / P00.
+  const double sx = 2.0 / fb.width() / camera.projection(0, 0);
+  const double sy = 2.0 / fb.height() / camera.projection(1, 1);
+  const double ox = -1.0 / camera.projection(0, 0), oy = 1.0 / camera.projection(1, 1);
+
+  // Color of one sample as 0x00RRGGBB.
+  auto sampleColor = [&](DepthKey key, int x, int y) -> uint32_t {
+    const uint32_t id = keyFaceId(key);
+    if (id == kBackgroundId) return background;
+    if (mode_ == ShadingMode::Depth) {
+      // Near white, far black, stretched over the depths present in the frame.
+      const double g = 1.0 - (double(keyDepth(key)) - depthLo) / depthRange;
+      return packRgb(g, g, g);
+    }
+    if (!perSample_) return faceColor(id);
+    const Vec3 dir(ox + (x + 0.5) * sx, oy - (y + 0.5) * sy, -1.0);
+    const cv::Vec3b c = shadeSample(id, dir);
+    return (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0];
+  };
+
+  for (int y = 0; y < height; ++y) {
+    uchar* out = color.ptr<uchar>(y);
+    if (scale == 1) {
+      const DepthKey* row = fb.row(y);
+      for (int x = 0; x < width; ++x) {
+        const uint32_t c = sampleColor(row[x], x, y);
+        out[3 * x + 0] = uchar(c);
+        out[3 * x + 1] = uchar(c >> 8);
+        out[3 * x + 2] = uchar(c >> 16);
+      }
+    } else {
+      const DepthKey* r0 = fb.row(2 * y);
+      const DepthKey* r1 = fb.row(2 * y + 1);
+      for (int x = 0; x < width; ++x) {
+        uint32_t sum[3] = {0, 0, 0};
+        const uint32_t cs[4] = {sampleColor(r0[2 * x], 2 * x, 2 * y),
+                                sampleColor(r0[2 * x + 1], 2 * x + 1, 2 * y),
+                                sampleColor(r1[2 * x], 2 * x, 2 * y + 1),
+                                sampleColor(r1[2 * x + 1], 2 * x + 1, 2 * y + 1)};
+        for (uint32_t c : cs) {
+          sum[0] += c & 0xFF;
+          sum[1] += (c >> 8) & 0xFF;
+          sum[2] += (c >> 16) & 0xFF;
+        }
+        // The rounded mean of the four samples, background included (SPEC §5).
+        for (int i = 0; i < 3; ++i) out[3 * x + i] = uchar((sum[i] + 2) / 4);
+      }
+    }
+  }
+}
+
+}  // namespace zrender

@@ -1,0 +1,47 @@
+#include "zrender/Transforms.hpp"
+
+#include <cmath>
+
+namespace zrender {
+
+Mat4 rotation(double degrees, const Vec3& axis) {
+  const Vec3 a = cv::normalize(axis);
+  const double r = degrees * CV_PI / 180.0;
+  const double c = std::cos(r), s = std::sin(r), t = 1.0 - c;
+  const double x = a[0], y = a[1], z = a[2];
+  // Rodrigues' formula, as glRotate.
+  return Mat4(t * x * x + c, t * x * y - s * z, t * x * z + s * y, 0.0,  //
+              t * x * y + s * z, t * y * y + c, t * y * z - s * x, 0.0,  //
+              t * x * z - s * y, t * y * z + s * x, t * z * z + c, 0.0,  //
+              0.0, 0.0, 0.0, 1.0);
+}
+
+Mat4 translation(const Vec3& o) {
+  return Mat4(1, 0, 0, o[0], 0, 1, 0, o[1], 0, 0, 1, o[2], 0, 0, 0, 1);
+}
+
+Mat4 lookAt(const Vec3& eye, const Vec3& target, const Vec3& up) {
+  const Vec3 f = cv::normalize(target - eye);
+  const Vec3 s = cv::normalize(f.cross(up));
+  const Vec3 u = s.cross(f);
+  return Mat4(s[0], s[1], s[2], -s.dot(eye),   //
+              u[0], u[1], u[2], -u.dot(eye),   //
+              -f[0], -f[1], -f[2], f.dot(eye),  //
+              0.0, 0.0, 0.0, 1.0);
+}
+
+Mat4 perspective(double fovyDegrees, double aspect, double near, double far) {
+  const double f = 1.0 / std::tan(fovyDegrees * CV_PI / 360.0);
+  return Mat4(f / aspect, 0.0, 0.0, 0.0,  //
+              0.0, f, 0.0, 0.0,           //
+              0.0, 0.0, (far + near) / (near - far), 2.0 * far * near / (near - far),  //
+              0.0, 0.0, -1.0, 0.0);
+}
+
+Vec3 clipToWindow(const Vec4& clip, int width, int height) {
+  const double invW = 1.0 / clip[3];
+  const double xNdc = clip[0] * invW, yNdc = clip[1] * invW, zNdc = clip[2] * invW;
+  return Vec3((xNdc + 1.0) * 0.5 * width, (1.0 - yNdc) * 0.5 * height, (zNdc + 1.0) * 0.5);
+}
+
+}  // namespace zrender

@@ -1,0 +1,5 @@
+#include <iostream>
+
+#include "zrender/CommandLine.hpp"
+
+int main(int argc, char** argv) { return zrender::runCommandLine(argc, argv, std::cout, std::cerr); }
