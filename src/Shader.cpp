@@ -9,7 +9,7 @@ namespace {
 
 // Packs an RGB color in 0..1 as 0x00RRGGBB, rounding to nearest.
 uint32_t packRgb(double r, double g, double b) {
-  auto q = [](double v) { return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+  auto q = [](double v) { return uint32_t(std::clamp(v, 0.0, 1.0) * 255.0 + 0.5); };
   return (q(r) << 16) | (q(g) << 8) | q(b);
 }
 
@@ -97,9 +97,9 @@ uint32_t Shader::faceColor(uint32_t faceId) {
       color = randomFaceColor(faceId);
       break;
     case ShadingMode::Normal: {
-      const Vec3 n = safeNormalize(transformDirection(modelView_[instance], faceNormals_[local]));
+      // Rigid transform of a unit (or zero) normal: no renormalization needed.
+      const Vec3 n = transformDirection(modelView_[instance], faceNormals_[local]);
       color = packRgb((n[0] + 1) * 0.5, (n[1] + 1) * 0.5, (n[2] + 1) * 0.5);
-      if (faceNormals_[local] == Vec3(0, 0, 0)) color = packRgb(0.5, 0.5, 0.5);
       break;
     }
     case ShadingMode::Flat: {
@@ -283,6 +283,26 @@ void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
     const cv::Vec3b c = shadeSample(id, dir);
     return (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0];
   };
+
+  if (scale == 1 && !perSample_ && mode_ != ShadingMode::Depth) {
+    // The common case (one sample per pixel, one color per face): a table look-up per pixel.
+    for (int y = 0; y < height; ++y) {
+      uchar* out = color.ptr<uchar>(y);
+      const DepthKey* row = fb.row(y);
+      for (int x = 0; x < width; ++x) {
+        const uint32_t id = keyFaceId(row[x]);
+        uint32_t c = background;
+        if (id != kBackgroundId) {
+          const FaceCache& entry = cache_[id];
+          c = entry.stamp == frame_ ? entry.data : faceColor(id);
+        }
+        out[3 * x + 0] = uchar(c);
+        out[3 * x + 1] = uchar(c >> 8);
+        out[3 * x + 2] = uchar(c >> 16);
+      }
+    }
+    return;
+  }
 
   for (int y = 0; y < height; ++y) {
     uchar* out = color.ptr<uchar>(y);

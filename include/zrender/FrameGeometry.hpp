@@ -19,10 +19,14 @@ struct ScreenFace {
   bool frontFacing;        // counter-clockwise in NDC
 };
 
-// A triangulation piece of a face, positively oriented (orient2d(v0, v1, v2) > 0).
+// A triangulation piece of a face, positively oriented (orient2d(v0, v1, v2) > 0). The face's
+// id and depth plane are copied in so that the pixel loops never look the face up: with the
+// faces in a separate array that look-up was a cache miss per triangle.
 struct ScreenTriangle {
   FixedPoint v[3];
-  uint32_t face;  // index into FrameGeometry::faces
+  uint32_t face;     // index into FrameGeometry::faces
+  uint32_t id;       // = faces[face].id
+  DepthPlane plane;  // = faces[face].plane
 };
 
 // Per-frame counters of the transform stage (SPEC §7 names in comments).

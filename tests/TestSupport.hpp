@@ -1,0 +1,54 @@
+#pragma once
+
+// Helpers shared by the test files: tiny meshes built in code, rendering a scene with a named
+// algorithm, and the reference models when setup has linked them.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "zrender/Camera.hpp"
+#include "zrender/FrameBuffer.hpp"
+#include "zrender/Mesh.hpp"
+#include "zrender/Renderer.hpp"
+#include "zrender/Scene.hpp"
+#include "zrender/Settings.hpp"
+
+namespace zrender::test {
+
+// A mesh of the given polygons (0-based position indices), no normals or texcoords.
+std::shared_ptr<const Mesh> makeMesh(const std::vector<Vec3>& positions,
+                                     const std::vector<std::vector<int>>& faces);
+
+// Settings for a tiny scene: `size` x `size` pixels, eye on +Z at distance 2 looking at the
+// origin with a 90 degree field of view, so the plane z = 0 shows x, y in [-2, 2] across the
+// image; near 0.1, far 10.
+SceneSettings tinySettings(int size);
+
+struct Rendered {
+  FrameBuffer buffer;
+  cv::Mat color;
+  RenderStats stats;
+};
+
+// Renders one frame of the scene with the algorithm named (makeAlgorithm).
+Rendered render(const Scene& scene, const std::string& algorithm);
+
+// Convenience: mesh + settings -> scene -> render.
+Rendered render(std::shared_ptr<const Mesh> mesh, const SceneSettings& settings,
+                const std::string& algorithm);
+
+// `count` random triangles in the cube [-1, 1]^3 with fixed seed; with `coplanarDuplicates`
+// every 7th triangle is repeated exactly (same vertices), so ties must go to the smaller id.
+std::shared_ptr<const Mesh> randomSoup(unsigned seed, int count, bool coplanarDuplicates);
+
+// A reference model from models/ (bunny, spot, teapot), or null when setup has not linked it.
+std::shared_ptr<const Mesh> referenceModel(const std::string& name);
+
+// The project's settings.json entry for a scene (path resolved), for tests on real scenes.
+SceneSettings projectScene(const std::string& name);
+
+// Number of samples whose keys differ.
+size_t countDifferences(const FrameBuffer& a, const FrameBuffer& b);
+
+}  // namespace zrender::test
