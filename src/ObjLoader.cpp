@@ -15,6 +15,7 @@
 #include <system_error>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <tiny_obj_loader.h>
@@ -28,9 +29,10 @@ namespace fs = std::filesystem;
 // Longest excerpt of an offending field quoted in a message; a field can be megabytes long.
 constexpr size_t kMaxExcerpt = 40;
 constexpr size_t kMaxNameExcerpt = 300;
-// Largest decimal exponent accepted in a number. tinyobjloader silently reads a number whose
-// exponent overflows an int as 0, and 0e500 as NaN (0 * 5^500); real files stay far below this.
-constexpr int kMaxExponent = 999;
+// Largest decimal exponent magnitude accepted; no finite double needs more than 324. Beyond it
+// tinyobjloader's 5^exponent overflows (0e500 would read as NaN), and past 2^31 / 10 it gives up
+// and silently reads 0. 1e400 passes and is then refused as infinite.
+constexpr int kMaxExponent = 400;
 constexpr int64_t kMaxIndex = std::numeric_limits<int32_t>::max();
 
 // Quotes file text for a one-line message: control bytes escaped, long text cut. Names (of files,
@@ -91,12 +93,13 @@ NumberKind classifyNumber(std::string_view s) {
   }
   if (digits == 0) {
     // "nan", "inf", "infinity" (what printf writes) and MSVC's "1.#INF", "-1.#IND".
-    std::string word;
-    for (size_t k = mantissaStart; k < n && word.size() < 9; ++k) {
-      word += static_cast<char>(std::tolower(static_cast<unsigned char>(s[k])));
+    char word[10] = {};
+    size_t length = 0;
+    for (size_t k = mantissaStart; k < n && length < sizeof word - 1; ++k) {
+      word[length++] = static_cast<char>(std::tolower(static_cast<unsigned char>(s[k])));
     }
-    if (mantissaStart + word.size() == n &&
-        (word == "nan" || word == "inf" || word == "infinity")) {
+    const std::string_view w(word, length);
+    if (mantissaStart + length == n && (w == "nan" || w == "inf" || w == "infinity")) {
       return NumberKind::kNonFinite;
     }
     return NumberKind::kMalformed;
@@ -116,24 +119,10 @@ NumberKind classifyNumber(std::string_view s) {
   return i == n ? NumberKind::kOk : NumberKind::kMalformed;
 }
 
-// Parses [+-]digits; the value saturates just above kMaxIndex. False if not an integer.
-bool parseIndex(std::string_view s, int64_t& value) {
-  size_t i = 0;
-  const bool negative = !s.empty() && s[0] == '-';
-  if (!s.empty() && (s[0] == '+' || s[0] == '-')) ++i;
-  if (i == s.size()) return false;
-  int64_t v = 0;
-  for (; i < s.size(); ++i) {
-    if (!isDigit(s[i])) return false;
-    if (v <= kMaxIndex) v = v * 10 + (s[i] - '0');
-  }
-  value = negative ? -v : v;
-  return true;
-}
-
 // The validation scan. tinyobjloader rc10 alone cannot name a bad line: it reads "v 1 abc 3" as
-// (1, 0, 3), "f 1 x 3" and "f 1/ 2/ 3/" as other indices (atoi on whatever follows), and its
-// callback API, which we use for the geometry, reports no line numbers and passes indices raw.
+// (1, 0, 3) and "v nan 0 0" as (0, 0, 0), "f 1 x 3" as index 0 and "f 1/ 2/ 3/" as texture
+// index 2 (atoi reads on into the next field), and its callback API, which we use for the
+// geometry, reports no line numbers and passes indices raw, unchecked.
 // So one pass over the text, before tinyobjloader's, checks every v/vt/vn/f line's fields and
 // index ranges, counting lines exactly as tinyobjloader's safeGetline splits them. It allocates
 // nothing and never builds geometry; tinyobjloader stays the parser.
@@ -237,23 +226,22 @@ class Scanner {
   // Next line without its terminator (\n, \r\n or a lone \r, as tinyobjloader's safeGetline),
   // cut at the first NUL because tinyobjloader parses each line through c_str().
   bool nextLine(std::string_view& line) {
-    if (pos_ >= text_.size()) return false;
-    const char* start = text_.data() + pos_;
-    const size_t rest = text_.size() - pos_;
-    const void* nl = std::memchr(start, '\n', rest);
-    size_t length = nl ? static_cast<const char*>(nl) - start : rest;
-    size_t next = pos_ + length + (nl ? 1 : 0);
-    if (const void* cr = std::memchr(start, '\r', length)) {
-      length = static_cast<const char*>(cr) - start;
-      next = pos_ + length + 1;
-      if (next < text_.size() && text_[next] == '\n') ++next;
+    const size_t size = text_.size();
+    if (pos_ >= size) return false;
+    const char* text = text_.data();
+    size_t end = pos_;
+    // The first test passes every printable byte, so most bytes cost one comparison.
+    while (end < size && (static_cast<unsigned char>(text[end]) > '\r' ||
+                          (text[end] != '\n' && text[end] != '\r' && text[end] != '\0'))) {
+      ++end;
     }
-    if (const void* nul = std::memchr(start, '\0', length)) {
-      length = static_cast<const char*>(nul) - start;
+    line = std::string_view(text + pos_, end - pos_);
+    if (end < size && text[end] == '\0') {  // rare: skip the rest of the line
+      while (end < size && text[end] != '\n' && text[end] != '\r') ++end;
     }
-    pos_ = next;
+    if (end < size && text[end] == '\r' && end + 1 < size && text[end + 1] == '\n') ++end;
+    pos_ = end + 1;
     ++lineNumber_;
-    line = std::string_view(start, length);
     return true;
   }
 
@@ -287,29 +275,34 @@ class Scanner {
   // One face corner: v, v/vt, v//vn or v/vt/vn, each a nonzero integer in range.
   void checkCorner(std::string_view field, const Counts& counts, int64_t* maxIndex,
                    size_t* maxIndexLine) const {
+    // One pass over the field: up to three '/'-separated parts, each empty or [+-]digits.
     std::string_view parts[3];
+    int64_t values[3] = {0, 0, 0};
     int partCount = 0;
-    bool tooManyParts = false;
-    for (std::string_view rest = field;;) {
-      if (partCount == 3) {
-        tooManyParts = true;
+    bool ok = true;
+    const size_t n = field.size();
+    for (size_t i = 0;;) {
+      const size_t begin = i;
+      if (i < n && (field[i] == '+' || field[i] == '-')) ++i;
+      int64_t value = 0;
+      const size_t digitsBegin = i;
+      for (; i < n && isDigit(field[i]); ++i) {
+        if (value <= kMaxIndex) value = value * 10 + (field[i] - '0');  // saturates
+      }
+      if (i == digitsBegin && i != begin) ok = false;  // a sign alone
+      parts[partCount] = field.substr(begin, i - begin);
+      values[partCount] = begin < n && field[begin] == '-' ? -value : value;
+      ++partCount;
+      if (i == n) break;
+      if (field[i] != '/' || partCount == 3) {
+        ok = false;
         break;
       }
-      const size_t slash = rest.find('/');
-      parts[partCount++] = rest.substr(0, slash);
-      if (slash == std::string_view::npos) break;
-      rest.remove_prefix(slash + 1);
+      ++i;
     }
     // "v//vn" leaves the middle part empty; any other empty part ("1/", "/2", "1/2/") would make
     // tinyobjloader atoi into the next field.
-    const bool shapeOk = !tooManyParts && !parts[0].empty() &&
-                         (partCount != 2 || !parts[1].empty()) &&
-                         (partCount != 3 || !parts[2].empty());
-    int64_t values[3] = {0, 0, 0};
-    bool ok = shapeOk;
-    for (int k = 0; ok && k < partCount; ++k) {
-      if (!parts[k].empty() && !parseIndex(parts[k], values[k])) ok = false;
-    }
+    ok = ok && !parts[0].empty() && !parts[partCount - 1].empty();
     if (!ok) {
       fail("malformed 'f' line: '" + excerpt(field) +
            "' is not a vertex reference (v, v/vt, v//vn or v/vt/vn)");
@@ -367,7 +360,7 @@ class MtlReader : public tinyobj::MaterialReader {
     std::error_code ec;
     std::ifstream in;
     if (fs::is_regular_file(path, ec)) in.open(path, std::ios::binary);
-    if (!in) {
+    if (!in.is_open() || !in) {
       if (reported_.insert(name).second) {
         warnings_.push_back(file_ + ": material file '" + quoteName(name) + "' not found");
       }
@@ -388,12 +381,15 @@ class MtlReader : public tinyobj::MaterialReader {
   bool missing_ = false;
 };
 
-// Receives tinyobjloader's callbacks, which arrive in file order, one per statement.
+// Receives tinyobjloader's callbacks, which arrive in file order, one per statement. Values come
+// as tinyobj::real_t: float with the tinyobjloader::tinyobjloader target, double with
+// tinyobjloader::tinyobjloader_double; either is widened to double here.
 struct Builder {
   Mesh mesh;
   std::vector<tinyobj::material_t> materials;
   std::unordered_map<std::string, int32_t> materialIndex;
-  std::vector<std::string> unknownMaterials;
+  std::vector<std::string> unknownMaterials;  // each name once, in order of first use
+  std::unordered_set<std::string> unknownSeen;
   int32_t currentMaterial = -1;
   // Ordinal of the first v / vt / vn statement with a non-finite value (overflow), or npos.
   size_t firstNonFinite[3] = {std::string::npos, std::string::npos, std::string::npos};
@@ -451,7 +447,9 @@ struct Builder {
     const std::string key(trim(name));
     const auto it = b.materialIndex.find(key);
     b.currentMaterial = it == b.materialIndex.end() ? -1 : it->second;
-    if (it == b.materialIndex.end() && !key.empty()) b.unknownMaterials.push_back(key);
+    if (it == b.materialIndex.end() && !key.empty() && b.unknownSeen.insert(key).second) {
+      b.unknownMaterials.push_back(key);
+    }
   }
 
   // Called after each mtllib with every material loaded so far.
@@ -575,15 +573,13 @@ Mesh loadObj(const std::filesystem::path& path, Warnings& warnings) {
     if (builder.firstNonFinite[k] == std::string::npos) continue;
     const size_t line = scanner.lineOf(kinds[k], builder.firstNonFinite[k]);
     throw InputError(file + ":" + std::to_string(line) +
-                     ": NaN or infinite coordinate (a number overflows a double)");
+                     ": NaN or infinite coordinate (a number overflows)");
   }
 
+  // After a missing .mtl every usemtl would be unknown; that file's warning says enough.
   if (!mtlReader.missing()) {
-    std::unordered_set<std::string> reported;
     for (const std::string& name : builder.unknownMaterials) {
-      if (reported.insert(name).second) {
-        warnings.push_back(file + ": material '" + quoteName(name) + "' not found");
-      }
+      warnings.push_back(file + ": material '" + quoteName(name) + "' not found");
     }
   }
 
@@ -602,7 +598,7 @@ Mesh loadObj(const std::filesystem::path& path, Warnings& warnings) {
     }
     mesh.materials.push_back(std::move(material));
   }
-  return mesh;
+  return std::move(builder.mesh);  // mesh is a reference into builder: move, not copy
 }
 
 }  // namespace zrender

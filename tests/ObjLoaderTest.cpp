@@ -107,7 +107,7 @@ TEST_F(ObjLoaderTest, Triangle) {
                          "# a triangle\n"
                          "v 0.5 -2.25 3\n"
                          "v 1 0 0\n"
-                         "v 0 1e1 -1.5E-1\n"
+                         "v 0 1e1 -1.25E-1\n"
                          "f 1 2 3\n");
   ASSERT_EQ(mesh.faceCount(), 1u);
   EXPECT_EQ(mesh.faceStart, (Offsets{0, 3}));
@@ -120,7 +120,7 @@ TEST_F(ObjLoaderTest, Triangle) {
   EXPECT_DOUBLE_EQ(mesh.positions[0][1], -2.25);
   EXPECT_DOUBLE_EQ(mesh.positions[0][2], 3.0);
   EXPECT_DOUBLE_EQ(mesh.positions[2][1], 10.0);
-  EXPECT_DOUBLE_EQ(mesh.positions[2][2], -0.15);
+  EXPECT_DOUBLE_EQ(mesh.positions[2][2], -0.125);
   EXPECT_FALSE(mesh.hasNormals());
   EXPECT_FALSE(mesh.hasTexcoords());
   EXPECT_TRUE(mesh.materials.empty());

@@ -1,0 +1,216 @@
+// Whole-pipeline scenes small enough to work out by hand: with test::tinySettings(8) the plane
+// z = 0 spans x, y in [-2, 2] across the 8 x 8 image, so world x maps to pixel column 2x + 4 and
+// world y to row 4 - 2y: one world unit is two pixels.
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "zrender/RasterRules.hpp"
+#include "zrender/Shader.hpp"
+#include "TestSupport.hpp"
+
+namespace zrender {
+namespace {
+
+// The face id of every pixel, row by row; -1 for background.
+std::vector<std::vector<int>> idMap(const FrameBuffer& fb) {
+  std::vector<std::vector<int>> m(size_t(fb.height()), std::vector<int>(size_t(fb.width()), -1));
+  for (int y = 0; y < fb.height(); ++y)
+    for (int x = 0; x < fb.width(); ++x) {
+      const uint32_t id = keyFaceId(fb.row(y)[x]);
+      m[size_t(y)][size_t(x)] = id == kBackgroundId ? -1 : int(id);
+    }
+  return m;
+}
+
+// Parses a picture like {"..00..", ...}: '.' background, a digit the face id.
+std::vector<std::vector<int>> picture(const std::vector<std::string>& rows) {
+  std::vector<std::vector<int>> m;
+  for (const auto& r : rows) {
+    m.emplace_back();
+    for (char c : r) m.back().push_back(c == '.' ? -1 : c - '0');
+  }
+  return m;
+}
+
+TEST(TinyScene, SquareQuadCoversExactlyItsSixteenPixels) {
+  // The square [-1, 1]^2 spans columns and rows 2..6 exactly, so the centres 2.5 .. 5.5 are in.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
+  EXPECT_EQ(idMap(r.buffer), picture({"........",  //
+                                      "........",  //
+                                      "..0000..",  //
+                                      "..0000..",  //
+                                      "..0000..",  //
+                                      "..0000..",  //
+                                      "........",  //
+                                      "........"}));
+  EXPECT_EQ(r.stats.trianglesRasterized, 2u);  // a quad is drawn as two pieces
+}
+
+TEST(TinyScene, ConcaveLShapeCoversExactlyItsArea) {
+  // L: [-1, 1] x [-1, 0] plus [-1, 0] x [0, 1], counter-clockwise seen from +Z.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 1, 0}, {-1, 1, 0}},
+                             {{0, 1, 2, 3, 4, 5}});
+  const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
+  EXPECT_EQ(idMap(r.buffer), picture({"........",  //
+                                      "........",  //
+                                      "..00....",  //
+                                      "..00....",  //
+                                      "..0000..",  //
+                                      "..0000..",  //
+                                      "........",  //
+                                      "........"}));
+}
+
+TEST(TinyScene, NearerFaceWinsAndBackFacesAreCulled) {
+  // Face 0: the square at z = 0. Face 1: a smaller square [0, 1]^2 at z = 0.5 (nearer the eye
+  // at z = 2), which covers... at depth 0.5 its projection is scaled by 2 / 1.5: [0, 4/3]^2 ->
+  // columns 4 .. 6.67, rows 1.33 .. 4: centres 4.5, 5.5, 6.5 and rows 1.5, 2.5, 3.5.
+  // Face 2: the same as face 1 but clockwise (a back face): culled.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0},  //
+                              {0, 0, 0.5}, {1, 0, 0.5}, {1, 1, 0.5}, {0, 1, 0.5}},
+                             {{0, 1, 2, 3}, {4, 5, 6, 7}, {7, 6, 5, 4}});
+  const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
+  EXPECT_EQ(idMap(r.buffer), picture({"........",  //
+                                      "....111.",  //
+                                      "..00111.",  //
+                                      "..00111.",  //
+                                      "..0000..",  //
+                                      "..0000..",  //
+                                      "........",  //
+                                      "........"}));
+  EXPECT_EQ(r.stats.trianglesBackfaceCulled, 2u);
+}
+
+TEST(TinyScene, NoCullDrawsBackFacesWithTheirOwnIds) {
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{3, 2, 1, 0}});
+  SceneSettings s = test::tinySettings(8);
+  EXPECT_EQ(idMap(test::render(mesh, s, "zbuffer").buffer)[3][3], -1);  // culled
+  s.cull = false;
+  EXPECT_EQ(idMap(test::render(mesh, s, "zbuffer").buffer)[3][3], 0);
+}
+
+TEST(TinyScene, DepthIsTheWindowDepthOfThePlane) {
+  // A square at z = 0 seen from distance 2 with near 0.1, far 10: window depth of a point at
+  // view distance d is (f + n)/(f - n)/2 - f n / (f - n) / d + 1/2 with n = 0.1, f = 10.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
+  const double n = 0.1, f = 10.0, d = 2.0;
+  const double expected = 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * d)) + 0.5;
+  EXPECT_NEAR(keyDepth(r.buffer.row(3)[3]), expected, 1e-6);
+  EXPECT_EQ(keyDepth(r.buffer.row(0)[0]), 1.0f);  // background is the far plane
+}
+
+TEST(TinyScene, HugeCoordinatesFarOutsideTheImageAreSafe) {
+  // A triangle reaching 1e7 units to the right and up: it covers the quadrant x >= -1 (columns
+  // from 2 on), y >= -1 (rows up to 5) of the image and nothing else.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1e7, -1, 0}, {-1, 1e7, 0}}, {{0, 1, 2}});
+  const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 8; ++x)
+      EXPECT_EQ(keyFaceId(r.buffer.row(y)[x]), (x >= 2 && y <= 5) ? 0u : kBackgroundId) << x << "," << y;
+}
+
+TEST(TinyScene, TriangleThroughTheEyePlaneMatchesItsPartBeforeTheNearPlane) {
+  // The triangle reaches z = 5, behind the eye at z = 2. Clipping at the near plane (view
+  // distance 0.1, world z = 1.9) must draw exactly what the part in front of that plane draws
+  // when given as its own polygon: the edges cut at z = 1.9, worked out by hand (y = -1 + z/5
+  // along the slanted edges, x shrinking linearly to 0 at z = 5).
+  auto whole = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {0, 0, 5}}, {{0, 1, 2}});
+  const double t = 1.9 / 5.0;  // fraction of the way to (0, 0, 5) at z = 1.9
+  auto part = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1 - t, -1 + t, 1.9}, {-(1 - t), -1 + t, 1.9}},
+                             {{0, 1, 2, 3}});
+  SceneSettings s = test::tinySettings(8);
+  s.cull = false;
+  const test::Rendered a = test::render(whole, s, "zbuffer"), b = test::render(part, s, "zbuffer");
+  EXPECT_EQ(idMap(a.buffer), idMap(b.buffer));
+  EXPECT_EQ(a.stats.trianglesClippedAway, 0u);
+  EXPECT_GT(a.stats.pixelsWritten, 8u);
+  // The part close to the eye swings below the image centre, filling the bottom rows.
+  EXPECT_EQ(idMap(a.buffer)[7][4], 0);
+}
+
+TEST(Shading, IdModeEncodesIdPlusOneLowByteInRed) {
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  SceneSettings s = test::tinySettings(8);
+  s.shading = ShadingMode::Id;
+  const test::Rendered r = test::render(mesh, s, "zbuffer");
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 3), cv::Vec3b(0, 0, 1));  // BGR: R = 1 = id 0 + 1
+  EXPECT_EQ(r.color.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 0));
+}
+
+TEST(Shading, NormalModeOfAFaceTowardTheEyeIsHalfHalfFull) {
+  // View-space normal (0, 0, 1) -> color (0.5, 0.5, 1) -> RGB (128, 128, 255).
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 3), cv::Vec3b(255, 128, 128));
+}
+
+TEST(Shading, FlatModeIsTheLambertTermSeenFromTheCentroid) {
+  // Centroid at the origin, eye at (0, 0, 2): the face normal points at the light: gray 255.
+  // Tilted 60 degrees about Y: cos 60 = 0.5 -> 128.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  SceneSettings s = test::tinySettings(8);
+  s.shading = ShadingMode::Flat;
+  EXPECT_EQ(test::render(mesh, s, "zbuffer").color.at<cv::Vec3b>(3, 3), cv::Vec3b(255, 255, 255));
+  s.angle = 60.0;
+  EXPECT_EQ(test::render(mesh, s, "zbuffer").color.at<cv::Vec3b>(3, 3), cv::Vec3b(128, 128, 128));
+}
+
+TEST(Shading, RandomColorsAreFixedPerIdAndDiffer) {
+  EXPECT_EQ(randomFaceColor(17), randomFaceColor(17));
+  std::set<uint32_t> colors;
+  for (uint32_t id = 0; id < 1000; ++id) colors.insert(randomFaceColor(id));
+  EXPECT_GT(colors.size(), 990u);
+}
+
+TEST(Shading, DepthModeIsWhiteNearBlackFar) {
+  // Two squares at different depths: the nearer one white, the farther black, background as set.
+  auto mesh = test::makeMesh({{-2, -2, -1}, {0, -2, -1}, {0, 0, -1}, {-2, 0, -1},  //
+                              {0, 0, 0.5}, {1, 0, 0.5}, {1, 1, 0.5}, {0, 1, 0.5}},
+                             {{0, 1, 2, 3}, {4, 5, 6, 7}});
+  SceneSettings s = test::tinySettings(8);
+  s.shading = ShadingMode::Depth;
+  s.background = {10, 20, 30};
+  const test::Rendered r = test::render(mesh, s, "zbuffer");
+  EXPECT_EQ(r.color.at<cv::Vec3b>(2, 5), cv::Vec3b(255, 255, 255));
+  EXPECT_EQ(r.color.at<cv::Vec3b>(5, 3), cv::Vec3b(0, 0, 0));
+  EXPECT_EQ(r.color.at<cv::Vec3b>(7, 7), cv::Vec3b(30, 20, 10));  // BGR of (10, 20, 30)
+}
+
+TEST(Msaa, HalfCoveredPixelIsTheExactMeanOfItsSamples) {
+  // A square whose left edge is at world x = -0.75 -> pixel column 2.5: in pixel 2 only the
+  // right column of samples (x = 2.75) is covered. Id shading: id 0 -> color (R=1): the
+  // resolved pixel is round((1 + 1 + 0 + 0) / 4) in red... use a white background instead
+  // so the mean is visible: background (255, 255, 255), face color (1, 0, 0) in RGB.
+  auto mesh = test::makeMesh({{-0.75, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-0.75, 1, 0}}, {{0, 1, 2, 3}});
+  SceneSettings s = test::tinySettings(8);
+  s.shading = ShadingMode::Id;
+  s.msaa = 4;
+  s.background = {255, 255, 255};
+  const test::Rendered r = test::render(mesh, s, "zbuffer");
+  EXPECT_EQ(r.buffer.width(), 16);  // samples
+  // Two samples (1,0,0) and two (255,255,255): mean = (128, 127.5 -> 128, 127.5 -> 128).
+  // Integer rounding (sum + 2) / 4: R (1+1+255+255+2)/4 = 128, G (0+0+510+2)/4 = 128.
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 2), cv::Vec3b(128, 128, 128));
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 3), cv::Vec3b(0, 0, 1));        // fully covered
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 1), cv::Vec3b(255, 255, 255));  // not covered
+}
+
+TEST(Msaa, AdjacentFacesBlendWithoutBackgroundBetweenThem) {
+  // Two faces sharing the edge x = 0.25 (pixel column 4.5): pixel 4 has two samples of each.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {0.25, -1, 0}, {0.25, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {1, 1, 0}},
+                             {{0, 1, 2, 3}, {1, 4, 5, 2}});
+  SceneSettings s = test::tinySettings(8);
+  s.shading = ShadingMode::Id;  // face 0 -> R 1, face 1 -> R 2
+  s.msaa = 4;
+  s.background = {255, 255, 255};
+  const test::Rendered r = test::render(mesh, s, "zbuffer");
+  // (1 + 1 + 2 + 2 + 2) / 4 = 2 in red, 0 in green and blue: no background leaked in.
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 4), cv::Vec3b(0, 0, 2));
+}
+
+}  // namespace
+}  // namespace zrender
