@@ -1,7 +1,13 @@
 #include "TestSupport.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <filesystem>
+#include <fstream>
 #include <random>
+#include <sstream>
 
 #include "zrender/ObjLoader.hpp"
 
@@ -74,6 +80,61 @@ SceneSettings projectScene(const std::string& name) {
   Warnings warnings;
   const SettingsFile file = loadSettings(ZRENDER_SOURCE_DIR "/settings.json", warnings);
   return file.scenes.at(name);
+}
+
+namespace {
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+RunResult runZrender(const std::vector<std::string>& args, const std::string& dir) {
+  TempDir capture;
+  const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (chdir(dir.empty() ? ZRENDER_SOURCE_DIR : dir.c_str()) != 0) _exit(127);
+    if (!freopen(outPath.c_str(), "w", stdout) || !freopen(errPath.c_str(), "w", stderr)) _exit(127);
+    std::vector<char*> argv;
+    std::string binary = ZRENDER_BINARY;
+    argv.push_back(binary.data());
+    std::vector<std::string> copy = args;
+    for (std::string& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    execv(binary.c_str(), argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  RunResult r;
+  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = readAll(outPath);
+  r.err = readAll(errPath);
+  return r;
+}
+
+TempDir::TempDir() {
+  static std::atomic<int> counter{0};
+  const auto base = std::filesystem::temp_directory_path() /
+                    ("zrender-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::create_directories(base);
+  path = base.string();
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path, ec);
+}
+
+std::string TempDir::write(const std::string& name, const std::string& text) const {
+  const std::string p = file(name);
+  std::ofstream(p, std::ios::binary) << text;
+  return p;
 }
 
 size_t countDifferences(const FrameBuffer& a, const FrameBuffer& b) {

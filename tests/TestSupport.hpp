@@ -48,6 +48,28 @@ std::shared_ptr<const Mesh> referenceModel(const std::string& name);
 // The project's settings.json entry for a scene (path resolved), for tests on real scenes.
 SceneSettings projectScene(const std::string& name);
 
+// Result of running the zrender executable.
+struct RunResult {
+  int status = -1;          // exit status
+  std::string out, err;     // standard output and error
+};
+
+// Runs the built zrender with `args` (each one argument, no shell quoting needed) in the
+// working directory `dir` (the project's folder when empty).
+RunResult runZrender(const std::vector<std::string>& args, const std::string& dir = "");
+
+// A fresh empty folder under the system temp folder, removed by the destructor.
+struct TempDir {
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  std::string path;
+  std::string file(const std::string& name) const { return path + "/" + name; }
+  // Writes `text` to `name` inside the folder and returns its path.
+  std::string write(const std::string& name, const std::string& text) const;
+};
+
 // Number of samples whose keys differ.
 size_t countDifferences(const FrameBuffer& a, const FrameBuffer& b);
 

@@ -1,0 +1,204 @@
+// The command line end to end (SPEC §2, §7, §8): the built executable run in a temp folder.
+
+#include <gtest/gtest.h>
+#include <json/json.h>
+
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+
+#include "TestSupport.hpp"
+
+namespace zrender {
+namespace {
+
+using test::runZrender;
+using test::TempDir;
+namespace fs = std::filesystem;
+
+const char* kSquare =
+    "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+    "f 1 2 3\nf 1 3 4\n";
+
+// A settings file with one scene `sq` drawing `model` on a 32 x 32 image.
+// `extra` is appended inside the scene object; `size` is the value of width and height.
+std::string settingsFor(const std::string& model, const std::string& extra = "",
+                        const std::string& size = "32") {
+  return R"({"sq": {"path": ")" + model + R"(", "width": )" + size + R"(, "height": )" + size +
+         R"(, "eye": [0, 0, 2], "project": [90, 0, 0.1, 10])" + extra + "}}";
+}
+
+// One line on stderr, "zrender: error: ...", containing every piece of `mustName`.
+void expectCleanError(const test::RunResult& r, const std::vector<std::string>& mustName) {
+  EXPECT_EQ(r.status, 2) << r.err;
+  ASSERT_FALSE(r.err.empty());
+  EXPECT_EQ(r.err.rfind("zrender: error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const auto& piece : mustName) EXPECT_NE(r.err.find(piece), std::string::npos) << r.err;
+}
+
+TEST(CommandLine, RendersTheDefaultOutputName) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  const auto r = runZrender({"sq"}, dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "");
+  const cv::Mat image = cv::imread(dir.file("sq.png"));
+  ASSERT_FALSE(image.empty());
+  EXPECT_EQ(image.cols, 32);
+  // The square spans the middle half of the image: normal color (128, 128, 255) there.
+  EXPECT_EQ(image.at<cv::Vec3b>(16, 16), cv::Vec3b(255, 128, 128));
+  EXPECT_EQ(image.at<cv::Vec3b>(2, 2), cv::Vec3b(0, 0, 0));
+  // Nothing else left behind (no temporary files).
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 3);
+}
+
+TEST(CommandLine, ModelFileAsSceneUsesFit) {
+  TempDir dir;
+  const std::string model = dir.write("thing.obj", kSquare);
+  const auto r = runZrender({model, "-o", dir.file("out/thing.png"), "--width", "20", "--height", "10"},
+                            dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const cv::Mat image = cv::imread(dir.file("out/thing.png"));  // parent folder created
+  ASSERT_EQ(image.rows, 10);
+  EXPECT_EQ(image.at<cv::Vec3b>(5, 10), cv::Vec3b(255, 128, 128));  // centred
+}
+
+TEST(CommandLine, JsonHasEveryFieldOfTheSpec) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  const auto r = runZrender({"sq", "--json", "--repeat", "3", "-o", dir.file("a.png")}, dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  Json::Value j;
+  std::string errors;
+  std::unique_ptr<Json::CharReader> reader(Json::CharReaderBuilder().newCharReader());
+  ASSERT_TRUE(reader->parse(r.out.data(), r.out.data() + r.out.size(), &j, &errors)) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
+  for (const char* key : {"scene", "algorithm", "width", "height", "msaa", "faces", "triangles",
+                          "load_ms", "prepare_ms", "transform_ms", "raster_ms", "raster_ms_min",
+                          "frame_ms", "write_ms", "total_ms", "peak_rss_mb", "stats"})
+    EXPECT_TRUE(j.isMember(key)) << key;
+  for (const char* key : {"triangles_backface_culled", "triangles_clipped_away",
+                          "triangles_rasterized", "triangles_hzb_culled", "octree_nodes_visited",
+                          "octree_nodes_culled", "pixels_tested", "pixels_written"})
+    EXPECT_TRUE(j["stats"].isMember(key)) << key;
+  EXPECT_EQ(j["scene"].asString(), "sq");
+  EXPECT_EQ(j["faces"].asInt(), 2);
+  EXPECT_EQ(j["stats"]["triangles_rasterized"].asInt(), 2);
+  // The square covers 16 x 16 pixels, each tested and written once.
+  EXPECT_EQ(j["stats"]["pixels_written"].asInt(), 256);
+  EXPECT_NEAR(j["frame_ms"].asDouble(), j["transform_ms"].asDouble() + j["raster_ms"].asDouble(), 0.01);
+}
+
+TEST(CommandLine, DepthAndIdOutputs) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  const auto r = runZrender({"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.tif"), "--ids",
+                             dir.file("i.png")},
+                            dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const cv::Mat depth = cv::imread(dir.file("d.tif"), cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(depth.type(), CV_32FC1);
+  EXPECT_EQ(depth.at<float>(0, 0), 1.0f);
+  EXPECT_GT(depth.at<float>(16, 16), 0.0f);
+  EXPECT_LT(depth.at<float>(16, 16), 1.0f);
+  const cv::Mat ids = cv::imread(dir.file("i.png"), cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(ids.type(), CV_8UC3);
+  // The diagonal runs from bottom-left to top-right: the upper-left half is face 1 (f 1 3 4),
+  // the lower-right half face 0; the image holds id + 1 in red.
+  EXPECT_EQ(ids.at<cv::Vec3b>(10, 10), cv::Vec3b(0, 0, 2));
+  EXPECT_EQ(ids.at<cv::Vec3b>(20, 20), cv::Vec3b(0, 0, 1));
+  EXPECT_EQ(ids.at<cv::Vec3b>(1, 1), cv::Vec3b(0, 0, 0));
+
+  const auto r16 = runZrender({"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.png")}, dir.path);
+  ASSERT_EQ(r16.status, 0) << r16.err;
+  const cv::Mat depth16 = cv::imread(dir.file("d.png"), cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(depth16.type(), CV_16UC1);
+  EXPECT_EQ(depth16.at<uint16_t>(0, 0), 65535);
+  EXPECT_EQ(depth16.at<uint16_t>(16, 16), uint16_t(std::lround(depth.at<float>(16, 16) * 65535.0)));
+}
+
+TEST(CommandLine, UnknownSettingsKeyIsAWarning) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj", R"(, "colour": 3)"));
+  const auto r = runZrender({"sq", "-o", dir.file("a.png")}, dir.path);
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.err.find("zrender: warning: "), std::string::npos);
+  EXPECT_NE(r.err.find("colour"), std::string::npos);
+}
+
+TEST(CommandLine, HelpExitsZero) {
+  const auto r = runZrender({"--help"});
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.out.find("--alg"), std::string::npos);
+}
+
+struct BadInput {
+  const char* name;
+  std::string model;                  // OBJ text
+  std::string settingsExtra;          // appended to the scene
+  std::vector<std::string> args;      // after the scene name
+  std::vector<std::string> mustName;  // pieces of the error line
+};
+
+class CommandLineErrors : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CommandLineErrors, OneLineExitTwoNoOutput) {
+  const BadInput& c = GetParam();
+  TempDir dir;
+  dir.write("m.obj", c.model);
+  dir.write("settings.json", settingsFor("m.obj", c.settingsExtra));
+  std::vector<std::string> args = {"sq"};
+  args.insert(args.end(), c.args.begin(), c.args.end());
+  bool hasOutput = false;
+  for (const auto& a : c.args) hasOutput |= a == "-o";
+  if (!hasOutput) args.insert(args.end(), {"-o", dir.file("out.png")});
+  const auto r = runZrender(args, dir.path);
+  expectCleanError(r, c.mustName);
+  EXPECT_FALSE(fs::exists(dir.file("out.png")));
+  EXPECT_FALSE(fs::exists(dir.file("sq.png")));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Spec8, CommandLineErrors,
+    ::testing::Values(
+        BadInput{"MissingModel", kSquare, "", {"--settings", "nope.json"}, {"nope.json", "cannot open"}},
+        BadInput{"MalformedObjLine", "v 0 0 0\nv 1 0 0\nv 0 x 0\nf 1 2 3\n", "", {}, {"m.obj:3"}},
+        BadInput{"IndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "", {}, {"m.obj:4", "9"}},
+        BadInput{"NanCoordinate", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "", {}, {"m.obj:2"}},
+        BadInput{"EmptyModel", "# nothing\n", "", {}, {"m.obj", "no faces"}},
+        BadInput{"WrongKeyType", kSquare, R"(, "fit": "yes")", {}, {"settings.json", "'sq'", "'fit'"}},
+        BadInput{"SizeOutOfRangeOnCommandLine", kSquare, "", {"--width", "0"}, {"width"}},
+        BadInput{"UnknownAlgorithm", kSquare, "", {"--alg", "raytrace"}, {"raytrace", "zbuffer"}},
+        BadInput{"UnknownShading", kSquare, "", {"--shading", "toon"}, {"toon", "phong"}},
+        BadInput{"UnsupportedExtension", kSquare, "", {"-o", "x.gif"}, {"x.gif", ".png"}},
+        BadInput{"UnwritableOutput", kSquare, "", {"-o", "/proc/zrender-nope/x.png"}, {"/proc/zrender-nope/x.png"}},
+        BadInput{"BadOption", kSquare, "", {"--frobnicate"}, {"command line", "frobnicate"}},
+        BadInput{"MsaaThree", kSquare, "", {"--msaa", "3"}, {"msaa"}}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
+
+TEST(CommandLine, SizeOutOfRangeInTheFileNamesTheKey) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj", "", "20000"));
+  expectCleanError(runZrender({"sq"}, dir.path), {"settings.json", "'sq'", "'width'", "16384"});
+}
+
+TEST(CommandLine, BadJsonNamesTheLine) {
+  TempDir dir;
+  dir.write("settings.json", "{\n  \"sq\": {\n    \"path\": \"m.obj\",,\n  }\n}\n");
+  expectCleanError(runZrender({"sq"}, dir.path), {"settings.json", "line 3"});
+}
+
+TEST(CommandLine, UnknownSceneListsTheScenes) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  expectCleanError(runZrender({"cube"}, dir.path), {"settings.json", "cube", "sq"});
+}
+
+}  // namespace
+}  // namespace zrender
