@@ -2,6 +2,10 @@
 #include <utility>
 
 #include "zrender/Error.hpp"
+#include "zrender/HierarchicalAlgorithm.hpp"
+#include "zrender/IntervalAlgorithm.hpp"
+#include "zrender/OctreeAlgorithm.hpp"
+#include "zrender/ScanlineAlgorithm.hpp"
 #include "zrender/VisibilityAlgorithm.hpp"
 #include "zrender/ZBufferAlgorithm.hpp"
 
@@ -15,6 +19,10 @@ using Maker = std::function<std::unique_ptr<VisibilityAlgorithm>()>;
 const std::vector<std::pair<std::string, Maker>>& registry() {
   static const std::vector<std::pair<std::string, Maker>> makers = {
       {"zbuffer", [] { return std::make_unique<ZBufferAlgorithm>(); }},
+      {"scanline", [] { return std::make_unique<ScanlineAlgorithm>(); }},
+      {"interval", [] { return std::make_unique<IntervalAlgorithm>(); }},
+      {"hierarchical", [] { return std::make_unique<HierarchicalAlgorithm>(); }},
+      {"octree", [] { return std::make_unique<OctreeAlgorithm>(); }},
   };
   return makers;
 }

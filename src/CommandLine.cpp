@@ -64,8 +64,7 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
   const bool bench = argc > 1 && std::strcmp(argv[1], "bench") == 0;
   VectorOptions vectors;
   if (bench) {
-    CLI::App app{"Time every algorithm on every scene and check that they agree.",
-                 "zrender bench"};
+    CLI::App app{"Time every algorithm on every scene and check that they agree.", "zrender bench"};
     BenchOptions options;
     std::string algs;
     app.add_option("scenes", options.scenes, "scenes (default: those with \"bench\": true)");
@@ -94,12 +93,12 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
     return runBench(options, out, err);
   }
 
-  CLI::App app{"zrender: render a scene with one of five hidden-surface algorithms.\n"
-               "  zrender SCENE [options]\n  zrender bench [SCENE...] [options]",
-               "zrender"};
+  CLI::App app{
+      "zrender: render a scene with one of five hidden-surface algorithms.\n"
+      "  zrender SCENE [options]\n  zrender bench [SCENE...] [options]",
+      "zrender"};
   RenderOptions options;
-  app.add_option("scene", options.scene, "a scene of settings.json, or a model file")
-      ->required();
+  app.add_option("scene", options.scene, "a scene of settings.json, or a model file")->required();
   app.add_option("-a,--alg", options.algorithm, "zbuffer scanline interval hierarchical octree");
   app.add_option("-o,--output", options.output, "color image (.png .jpg .bmp .ppm .tif)");
   app.add_option("--depth", options.depth, "depth image (.tif/.exr 32-bit float, .png 16-bit)");

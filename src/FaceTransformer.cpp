@@ -197,8 +197,8 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vec4* clip, uint32_t n,
   const uint32_t faceIndex = uint32_t(out.faces.size());
   out.vertices.insert(out.vertices.end(), snapped_.begin(), snapped_.end());
   for (const auto& t : pieces_)
-    out.triangles.push_back(ScreenTriangle{
-        {snapped_[t[0]], snapped_[t[1]], snapped_[t[2]]}, faceIndex, faceId, plane});
+    out.triangles.push_back(
+        ScreenTriangle{{snapped_[t[0]], snapped_[t[1]], snapped_[t[2]]}, faceIndex, faceId, plane});
   out.faces.push_back(face);
 }
 

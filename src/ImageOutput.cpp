@@ -47,8 +47,8 @@ void checkOutputExtension(const std::filesystem::path& path,
     if (ext == a) return;
     list += (list.empty() ? "" : " ") + std::string(a);
   }
-  throw InputError(path.string() + ": unsupported " + what + " format '" + ext +
-                   "' (use " + list + ")");
+  throw InputError(path.string() + ": unsupported " + what + " format '" + ext + "' (use " + list +
+                   ")");
 }
 
 void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image) {
@@ -60,8 +60,8 @@ void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& imag
     if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
   }
   // Same folder (so rename is atomic), same extension (imwrite picks the codec from it).
-  const fs::path tmp = parent / ("." + path.stem().string() + ".tmp-" +
-                                 std::to_string(::getpid()) + path.extension().string());
+  const fs::path tmp = parent / ("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) +
+                                 path.extension().string());
   bool ok = false;
   std::string reason = "cannot write file";
   try {
@@ -87,8 +87,10 @@ cv::Mat depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const float d = keyDepth(pixelKey(fb, scale, x, y));
-      if (sixteenBit) out.at<uint16_t>(y, x) = uint16_t(std::lround(double(d) * 65535.0));
-      else out.at<float>(y, x) = d;
+      if (sixteenBit)
+        out.at<uint16_t>(y, x) = uint16_t(std::lround(double(d) * 65535.0));
+      else
+        out.at<float>(y, x) = d;
     }
   }
   return out;
@@ -101,9 +103,9 @@ cv::Mat idImage(const FrameBuffer& fb, int scale) {
     uchar* p = out.ptr<uchar>(y);
     for (int x = 0; x < width; ++x) {
       const uint32_t v = keyFaceId(pixelKey(fb, scale, x, y)) + 1;  // background wraps to 0
-      p[3 * x + 2] = uchar(v);        // R: low byte
-      p[3 * x + 1] = uchar(v >> 8);   // G: middle byte
-      p[3 * x + 0] = uchar(v >> 16);  // B: high byte
+      p[3 * x + 2] = uchar(v);                                      // R: low byte
+      p[3 * x + 1] = uchar(v >> 8);                                 // G: middle byte
+      p[3 * x + 0] = uchar(v >> 16);                                // B: high byte
     }
   }
   return out;

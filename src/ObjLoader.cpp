@@ -511,11 +511,20 @@ std::string readFile(const fs::path& path, const std::string& file) {
 }  // namespace
 
 Mesh loadObj(const std::filesystem::path& path, Warnings& warnings) {
+  return loadObjFromText(readFile(path, path.string()), path, warnings);
+}
+
+Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
+                     Warnings& warnings) {
   const std::string file = path.string();
-  const std::string data = readFile(path, file);
   std::string_view text(data);
   // tinyobjloader does not skip a UTF-8 byte order mark; the first statement would be lost.
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  // UTF-16 text reads as lines cut at their NUL bytes, so the scan would only report "no
+  // faces"; the byte order mark tells what is really wrong.
+  if (text.substr(0, 2) == "\xFF\xFE" || text.substr(0, 2) == "\xFE\xFF") {
+    throw InputError(file + ":1: UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
+  }
 
   Scanner scanner(file, text);
   const Scanner::Counts counts = scanner.validate();

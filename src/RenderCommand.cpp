@@ -22,16 +22,16 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   };
 
   makeAlgorithm(options.algorithm);  // an unknown name fails before any loading
-  SceneSettings settings = resolveScene(options.scene, options.settings, options.overrides,
-                                        warnings);
+  SceneSettings settings =
+      resolveScene(options.scene, options.settings, options.overrides, warnings);
   flushWarnings();
-  if (options.turntable > 0)
-    throw InputError("command line: --turntable: not implemented yet");
+  if (options.turntable > 0) throw InputError("command line: --turntable: not implemented yet");
 
   // Check every output name before the work, so a typo costs nothing and writes nothing.
   const fs::path colorPath = options.output ? *options.output : fs::path(settings.name + ".png");
   checkOutputExtension(colorPath, colorExtensions(), "image");
-  if (options.depth) checkOutputExtension(*options.depth, {".tif", ".tiff", ".exr", ".png"}, "depth");
+  if (options.depth)
+    checkOutputExtension(*options.depth, {".tif", ".tiff", ".exr", ".png"}, "depth");
   if (options.ids) checkOutputExtension(*options.ids, {".png"}, "id image");
 
   const double loadStart = nowMs();

@@ -37,14 +37,13 @@ std::string toJsonLine(const Json::Value& value) {
 
 void printStats(const RenderStats& s, std::ostream& out) {
   out << "triangles: " << s.trianglesRasterized << " rasterized, " << s.trianglesBackfaceCulled
-      << " back-facing, " << s.trianglesClippedAway << " clipped away, "
-      << s.trianglesDegenerate << " degenerate, " << s.trianglesHzbCulled
-      << " rejected by the z-pyramid\n";
+      << " back-facing, " << s.trianglesClippedAway << " clipped away, " << s.trianglesDegenerate
+      << " degenerate, " << s.trianglesHzbCulled << " rejected by the z-pyramid\n";
   out << "octree: " << s.octreeNodesVisited << " nodes visited, " << s.octreeNodesCulled
       << " rejected\n";
   out << "samples: " << s.pixelsTested << " depth tests, " << s.pixelsWritten << " written";
-  if (s.pixelsTested) out << " (" << (100.0 * double(s.pixelsWritten) / double(s.pixelsTested))
-                          << "% won)";
+  if (s.pixelsTested)
+    out << " (" << (100.0 * double(s.pixelsWritten) / double(s.pixelsTested)) << "% won)";
   out << "\n";
   for (const auto& [name, value] : s.extra) out << name << ": " << value << "\n";
 }

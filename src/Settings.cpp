@@ -494,27 +494,31 @@ void validateScene(const SceneSettings& scene, const std::string& where) {
     checkFinite(where, "grid.spacing", scene.grid->spacing);
   }
 
+  // Without an eye, fit still keeps the default viewing direction, down -z (makeCamera puts
+  // the eye at target + (0, 0, 1)), so up must not be parallel to it either.
+  cv::Vec3d direction(0.0, 0.0, -1.0);
+  std::string directionName = "the default viewing direction (no eye given) ";
   if (!scene.eye) {
-    // fit then chooses the eye itself.
     if (!scene.fit) failKey(where, "eye", "missing (required unless fit is on)");
-    return;
-  }
-  const cv::Vec3d eye = *scene.eye;
-  checkFinite(where, "eye", eye);
-  const cv::Vec3d direction = scene.target - eye;
-  if (!isUsableDirection(direction)) {
-    failKey(where, "eye",
-            "must differ from target " + formatVec(scene.target) + ", got " + formatVec(eye));
+  } else {
+    const cv::Vec3d eye = *scene.eye;
+    checkFinite(where, "eye", eye);
+    direction = scene.target - eye;
+    directionName = "the viewing direction target - eye ";
+    if (!isUsableDirection(direction)) {
+      failKey(where, "eye",
+              "must differ from target " + formatVec(scene.target) + ", got " + formatVec(eye));
+    }
   }
   // lookAt needs a right vector up x direction; fit keeps both (SPEC §4), so the rule holds
-  // with fit too whenever an eye is given.
+  // with fit too.
   // Unit vectors first: the cross product of raw large vectors could overflow.
   const cv::Vec3d right = (direction / cv::norm(direction)).cross(scene.up / cv::norm(scene.up));
   const double sine = cv::norm(right);
   if (!(sine > 1e-9)) {
     failKey(where, "up",
-            "must not be parallel to the viewing direction target - eye " + formatVec(direction) +
-                ", got " + formatVec(scene.up));
+            "must not be parallel to " + directionName + formatVec(direction) + ", got " +
+                formatVec(scene.up));
   }
 }
 

@@ -144,9 +144,12 @@ uint32_t Shader::faceShadeIndex(uint32_t faceId) {
   for (uint32_t i = 0; i < n; ++i) {
     cornerPos_.push_back(transformPoint(mv, mesh.positions[size_t(c[i].position)]));
     Vec3 normal;
-    if (allNormals) normal = mesh.normals[size_t(c[i].normal)];
-    else if (!smoothNormals_.empty()) normal = smoothNormals_[size_t(c[i].position)];
-    else normal = faceNormals_[local];
+    if (allNormals)
+      normal = mesh.normals[size_t(c[i].normal)];
+    else if (!smoothNormals_.empty())
+      normal = smoothNormals_[size_t(c[i].position)];
+    else
+      normal = faceNormals_[local];
     cornerNormal_.push_back(safeNormalize(transformDirection(mv, normal)));
     cornerUv_.push_back(allUvs ? mesh.texcoords[size_t(c[i].texcoord)] : cv::Vec2d(0, 0));
   }

@@ -24,16 +24,16 @@ Mat4 lookAt(const Vec3& eye, const Vec3& target, const Vec3& up) {
   const Vec3 f = cv::normalize(target - eye);
   const Vec3 s = cv::normalize(f.cross(up));
   const Vec3 u = s.cross(f);
-  return Mat4(s[0], s[1], s[2], -s.dot(eye),   //
-              u[0], u[1], u[2], -u.dot(eye),   //
+  return Mat4(s[0], s[1], s[2], -s.dot(eye),    //
+              u[0], u[1], u[2], -u.dot(eye),    //
               -f[0], -f[1], -f[2], f.dot(eye),  //
               0.0, 0.0, 0.0, 1.0);
 }
 
 Mat4 perspective(double fovyDegrees, double aspect, double near, double far) {
   const double f = 1.0 / std::tan(fovyDegrees * CV_PI / 360.0);
-  return Mat4(f / aspect, 0.0, 0.0, 0.0,  //
-              0.0, f, 0.0, 0.0,           //
+  return Mat4(f / aspect, 0.0, 0.0, 0.0,                                               //
+              0.0, f, 0.0, 0.0,                                                        //
               0.0, 0.0, (far + near) / (near - far), 2.0 * far * near / (near - far),  //
               0.0, 0.0, -1.0, 0.0);
 }

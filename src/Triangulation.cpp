@@ -13,8 +13,10 @@ bool insideOrOn(const FixedPoint& a, const FixedPoint& b, const FixedPoint& c,
 void emit(const FixedPoint* pts, uint32_t i, uint32_t j, uint32_t k,
           std::vector<std::array<uint32_t, 3>>& out) {
   const int64_t o = orient2d(pts[i], pts[j], pts[k]);
-  if (o > 0) out.push_back({i, j, k});
-  else if (o < 0) out.push_back({i, k, j});
+  if (o > 0)
+    out.push_back({i, j, k});
+  else if (o < 0)
+    out.push_back({i, k, j});
 }
 
 }  // namespace

@@ -29,8 +29,8 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     const int bottom = lastSampleAtOrBefore(std::max({v[0].y, v[1].y, v[2].y}));
     const int left = firstSampleAtOrAfter(std::min({v[0].x, v[1].x, v[2].x}));
     const int right = lastSampleAtOrBefore(std::max({v[0].x, v[1].x, v[2].x}));
-    const bool visible = top <= std::min(bottom, height - 1) && right >= 0 && left < width &&
-                         left <= right;
+    const bool visible =
+        top <= std::min(bottom, height - 1) && right >= 0 && left < width && left <= right;
     band_[i] = visible ? uint32_t(top >> kBandShift) : uint32_t(bandCount);
     if (visible) ++bandStart_[band_[i] + 1];
   }

@@ -2,4 +2,6 @@
 
 #include "zrender/CommandLine.hpp"
 
-int main(int argc, char** argv) { return zrender::runCommandLine(argc, argv, std::cout, std::cerr); }
+int main(int argc, char** argv) {
+  return zrender::runCommandLine(argc, argv, std::cout, std::cerr);
+}

@@ -56,8 +56,8 @@ TEST(CommandLine, RendersTheDefaultOutputName) {
 TEST(CommandLine, ModelFileAsSceneUsesFit) {
   TempDir dir;
   const std::string model = dir.write("thing.obj", kSquare);
-  const auto r = runZrender({model, "-o", dir.file("out/thing.png"), "--width", "20", "--height", "10"},
-                            dir.path);
+  const auto r = runZrender(
+      {model, "-o", dir.file("out/thing.png"), "--width", "20", "--height", "10"}, dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
   const cv::Mat image = cv::imread(dir.file("out/thing.png"));  // parent folder created
   ASSERT_EQ(image.rows, 10);
@@ -88,16 +88,17 @@ TEST(CommandLine, JsonHasEveryFieldOfTheSpec) {
   EXPECT_EQ(j["stats"]["triangles_rasterized"].asInt(), 2);
   // The square covers 16 x 16 pixels, each tested and written once.
   EXPECT_EQ(j["stats"]["pixels_written"].asInt(), 256);
-  EXPECT_NEAR(j["frame_ms"].asDouble(), j["transform_ms"].asDouble() + j["raster_ms"].asDouble(), 0.01);
+  EXPECT_NEAR(j["frame_ms"].asDouble(), j["transform_ms"].asDouble() + j["raster_ms"].asDouble(),
+              0.01);
 }
 
 TEST(CommandLine, DepthAndIdOutputs) {
   TempDir dir;
   dir.write("sq.obj", kSquare);
   dir.write("settings.json", settingsFor("sq.obj"));
-  const auto r = runZrender({"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.tif"), "--ids",
-                             dir.file("i.png")},
-                            dir.path);
+  const auto r = runZrender(
+      {"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.tif"), "--ids", dir.file("i.png")},
+      dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
   const cv::Mat depth = cv::imread(dir.file("d.tif"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(depth.type(), CV_32FC1);
@@ -112,7 +113,8 @@ TEST(CommandLine, DepthAndIdOutputs) {
   EXPECT_EQ(ids.at<cv::Vec3b>(20, 20), cv::Vec3b(0, 0, 1));
   EXPECT_EQ(ids.at<cv::Vec3b>(1, 1), cv::Vec3b(0, 0, 0));
 
-  const auto r16 = runZrender({"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.png")}, dir.path);
+  const auto r16 =
+      runZrender({"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.png")}, dir.path);
   ASSERT_EQ(r16.status, 0) << r16.err;
   const cv::Mat depth16 = cv::imread(dir.file("d.png"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(depth16.type(), CV_16UC1);
@@ -165,17 +167,24 @@ TEST_P(CommandLineErrors, OneLineExitTwoNoOutput) {
 INSTANTIATE_TEST_SUITE_P(
     Spec8, CommandLineErrors,
     ::testing::Values(
-        BadInput{"MissingModel", kSquare, "", {"--settings", "nope.json"}, {"nope.json", "cannot open"}},
+        BadInput{
+            "MissingModel", kSquare, "", {"--settings", "nope.json"}, {"nope.json", "cannot open"}},
         BadInput{"MalformedObjLine", "v 0 0 0\nv 1 0 0\nv 0 x 0\nf 1 2 3\n", "", {}, {"m.obj:3"}},
-        BadInput{"IndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "", {}, {"m.obj:4", "9"}},
+        BadInput{
+            "IndexOutOfRange", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "", {}, {"m.obj:4", "9"}},
         BadInput{"NanCoordinate", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "", {}, {"m.obj:2"}},
         BadInput{"EmptyModel", "# nothing\n", "", {}, {"m.obj", "no faces"}},
-        BadInput{"WrongKeyType", kSquare, R"(, "fit": "yes")", {}, {"settings.json", "'sq'", "'fit'"}},
+        BadInput{
+            "WrongKeyType", kSquare, R"(, "fit": "yes")", {}, {"settings.json", "'sq'", "'fit'"}},
         BadInput{"SizeOutOfRangeOnCommandLine", kSquare, "", {"--width", "0"}, {"width"}},
         BadInput{"UnknownAlgorithm", kSquare, "", {"--alg", "raytrace"}, {"raytrace", "zbuffer"}},
         BadInput{"UnknownShading", kSquare, "", {"--shading", "toon"}, {"toon", "phong"}},
         BadInput{"UnsupportedExtension", kSquare, "", {"-o", "x.gif"}, {"x.gif", ".png"}},
-        BadInput{"UnwritableOutput", kSquare, "", {"-o", "/proc/zrender-nope/x.png"}, {"/proc/zrender-nope/x.png"}},
+        BadInput{"UnwritableOutput",
+                 kSquare,
+                 "",
+                 {"-o", "/proc/zrender-nope/x.png"},
+                 {"/proc/zrender-nope/x.png"}},
         BadInput{"BadOption", kSquare, "", {"--frobnicate"}, {"command line", "frobnicate"}},
         BadInput{"MsaaThree", kSquare, "", {"--msaa", "3"}, {"msaa"}}),
     [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });

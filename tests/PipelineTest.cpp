@@ -6,9 +6,9 @@
 
 #include <set>
 
+#include "TestSupport.hpp"
 #include "zrender/RasterRules.hpp"
 #include "zrender/Shader.hpp"
-#include "TestSupport.hpp"
 
 namespace zrender {
 namespace {
@@ -69,8 +69,14 @@ TEST(TinyScene, NearerFaceWinsAndBackFacesAreCulled) {
   // at z = 2), which covers... at depth 0.5 its projection is scaled by 2 / 1.5: [0, 4/3]^2 ->
   // columns 4 .. 6.67, rows 1.33 .. 4: centres 4.5, 5.5, 6.5 and rows 1.5, 2.5, 3.5.
   // Face 2: the same as face 1 but clockwise (a back face): culled.
-  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0},  //
-                              {0, 0, 0.5}, {1, 0, 0.5}, {1, 1, 0.5}, {0, 1, 0.5}},
+  auto mesh = test::makeMesh({{-1, -1, 0},
+                              {1, -1, 0},
+                              {1, 1, 0},
+                              {-1, 1, 0},  //
+                              {0, 0, 0.5},
+                              {1, 0, 0.5},
+                              {1, 1, 0.5},
+                              {0, 1, 0.5}},
                              {{0, 1, 2, 3}, {4, 5, 6, 7}, {7, 6, 5, 4}});
   const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
   EXPECT_EQ(idMap(r.buffer), picture({"........",  //
@@ -110,7 +116,8 @@ TEST(TinyScene, HugeCoordinatesFarOutsideTheImageAreSafe) {
   const test::Rendered r = test::render(mesh, test::tinySettings(8), "zbuffer");
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 8; ++x)
-      EXPECT_EQ(keyFaceId(r.buffer.row(y)[x]), (x >= 2 && y <= 5) ? 0u : kBackgroundId) << x << "," << y;
+      EXPECT_EQ(keyFaceId(r.buffer.row(y)[x]), (x >= 2 && y <= 5) ? 0u : kBackgroundId)
+          << x << "," << y;
 }
 
 TEST(TinyScene, TriangleThroughTheEyePlaneMatchesItsPartBeforeTheNearPlane) {
@@ -120,8 +127,8 @@ TEST(TinyScene, TriangleThroughTheEyePlaneMatchesItsPartBeforeTheNearPlane) {
   // along the slanted edges, x shrinking linearly to 0 at z = 5).
   auto whole = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {0, 0, 5}}, {{0, 1, 2}});
   const double t = 1.9 / 5.0;  // fraction of the way to (0, 0, 5) at z = 1.9
-  auto part = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1 - t, -1 + t, 1.9}, {-(1 - t), -1 + t, 1.9}},
-                             {{0, 1, 2, 3}});
+  auto part = test::makeMesh(
+      {{-1, -1, 0}, {1, -1, 0}, {1 - t, -1 + t, 1.9}, {-(1 - t), -1 + t, 1.9}}, {{0, 1, 2, 3}});
   SceneSettings s = test::tinySettings(8);
   s.cull = false;
   const test::Rendered a = test::render(whole, s, "zbuffer"), b = test::render(part, s, "zbuffer");
@@ -168,8 +175,14 @@ TEST(Shading, RandomColorsAreFixedPerIdAndDiffer) {
 
 TEST(Shading, DepthModeIsWhiteNearBlackFar) {
   // Two squares at different depths: the nearer one white, the farther black, background as set.
-  auto mesh = test::makeMesh({{-2, -2, -1}, {0, -2, -1}, {0, 0, -1}, {-2, 0, -1},  //
-                              {0, 0, 0.5}, {1, 0, 0.5}, {1, 1, 0.5}, {0, 1, 0.5}},
+  auto mesh = test::makeMesh({{-2, -2, -1},
+                              {0, -2, -1},
+                              {0, 0, -1},
+                              {-2, 0, -1},  //
+                              {0, 0, 0.5},
+                              {1, 0, 0.5},
+                              {1, 1, 0.5},
+                              {0, 1, 0.5}},
                              {{0, 1, 2, 3}, {4, 5, 6, 7}});
   SceneSettings s = test::tinySettings(8);
   s.shading = ShadingMode::Depth;
@@ -185,7 +198,8 @@ TEST(Msaa, HalfCoveredPixelIsTheExactMeanOfItsSamples) {
   // right column of samples (x = 2.75) is covered. Id shading: id 0 -> color (R=1): the
   // resolved pixel is round((1 + 1 + 0 + 0) / 4) in red... use a white background instead
   // so the mean is visible: background (255, 255, 255), face color (1, 0, 0) in RGB.
-  auto mesh = test::makeMesh({{-0.75, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-0.75, 1, 0}}, {{0, 1, 2, 3}});
+  auto mesh =
+      test::makeMesh({{-0.75, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-0.75, 1, 0}}, {{0, 1, 2, 3}});
   SceneSettings s = test::tinySettings(8);
   s.shading = ShadingMode::Id;
   s.msaa = 4;
@@ -201,8 +215,9 @@ TEST(Msaa, HalfCoveredPixelIsTheExactMeanOfItsSamples) {
 
 TEST(Msaa, AdjacentFacesBlendWithoutBackgroundBetweenThem) {
   // Two faces sharing the edge x = 0.25 (pixel column 4.5): pixel 4 has two samples of each.
-  auto mesh = test::makeMesh({{-1, -1, 0}, {0.25, -1, 0}, {0.25, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {1, 1, 0}},
-                             {{0, 1, 2, 3}, {1, 4, 5, 2}});
+  auto mesh =
+      test::makeMesh({{-1, -1, 0}, {0.25, -1, 0}, {0.25, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {1, 1, 0}},
+                     {{0, 1, 2, 3}, {1, 4, 5, 2}});
   SceneSettings s = test::tinySettings(8);
   s.shading = ShadingMode::Id;  // face 0 -> R 1, face 1 -> R 2
   s.msaa = 4;

@@ -10,11 +10,11 @@
 #include <random>
 #include <vector>
 
+#include "TestSupport.hpp"
 #include "zrender/FrameGeometry.hpp"
 #include "zrender/RasterRules.hpp"
 #include "zrender/Triangulation.hpp"
 #include "zrender/ZBufferAlgorithm.hpp"
-#include "TestSupport.hpp"
 
 namespace zrender {
 namespace {
@@ -131,7 +131,8 @@ TEST(FillRule, FanAroundOneVertexCoversItsPolygonExactlyOnce) {
     for (int i = 0; i < k; ++i) star &= orient2d(o, ring[i], ring[(i + 1) % k]) > 0;
     if (!star) continue;
     std::vector<int> count(kSize * kSize, 0);
-    for (int i = 0; i < k; ++i) addCoverage(oriented(o, ring[i], ring[(i + 1) % k]).data(), kSize, count);
+    for (int i = 0; i < k; ++i)
+      addCoverage(oriented(o, ring[i], ring[(i + 1) % k]).data(), kSize, count);
     for (int y = 0; y < kSize; ++y)
       for (int x = 0; x < kSize; ++x)
         ASSERT_EQ(count[size_t(y) * kSize + x], oracleCovers(ring, x, y) ? 1 : 0)
@@ -150,7 +151,8 @@ TEST(FillRule, ConcavePolygonTriangulationCoversExactlyThePolygon) {
     Polygon poly;
     for (int i = 0; i < k; ++i) {
       const double t = 2 * CV_PI * i / k, r = radius(rng);
-      poly.push_back({snapToSubpixel(8.0 + r * std::cos(t)), snapToSubpixel(8.0 + r * std::sin(t))});
+      poly.push_back(
+          {snapToSubpixel(8.0 + r * std::cos(t)), snapToSubpixel(8.0 + r * std::sin(t))});
     }
     if (trial % 2) std::reverse(poly.begin(), poly.end());  // both windings
     pieces.clear();
@@ -220,7 +222,8 @@ FrameGeometry geometryOf(const std::vector<std::array<FixedPoint, 3>>& tris,
     f.plane = planes[i];
     f.frontFacing = true;
     g.vertices.insert(g.vertices.end(), t.begin(), t.end());
-    g.triangles.push_back(ScreenTriangle{{t[0], t[1], t[2]}, uint32_t(g.faces.size()), ids[i], planes[i]});
+    g.triangles.push_back(
+        ScreenTriangle{{t[0], t[1], t[2]}, uint32_t(g.faces.size()), ids[i], planes[i]});
     g.faces.push_back(f);
   }
   return g;

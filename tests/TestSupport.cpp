@@ -99,7 +99,8 @@ RunResult runZrender(const std::vector<std::string>& args, const std::string& di
   const pid_t pid = fork();
   if (pid == 0) {
     if (chdir(dir.empty() ? ZRENDER_SOURCE_DIR : dir.c_str()) != 0) _exit(127);
-    if (!freopen(outPath.c_str(), "w", stdout) || !freopen(errPath.c_str(), "w", stderr)) _exit(127);
+    if (!freopen(outPath.c_str(), "w", stdout) || !freopen(errPath.c_str(), "w", stderr))
+      _exit(127);
     std::vector<char*> argv;
     std::string binary = ZRENDER_BINARY;
     argv.push_back(binary.data());

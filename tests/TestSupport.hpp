@@ -50,8 +50,8 @@ SceneSettings projectScene(const std::string& name);
 
 // Result of running the zrender executable.
 struct RunResult {
-  int status = -1;          // exit status
-  std::string out, err;     // standard output and error
+  int status = -1;       // exit status
+  std::string out, err;  // standard output and error
 };
 
 // Runs the built zrender with `args` (each one argument, no shell quoting needed) in the

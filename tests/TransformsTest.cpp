@@ -4,17 +4,18 @@
 
 #include <cmath>
 
+#include "TestSupport.hpp"
 #include "zrender/Camera.hpp"
 #include "zrender/Clipping.hpp"
 #include "zrender/Transforms.hpp"
-#include "TestSupport.hpp"
 
 namespace zrender {
 namespace {
 
 void expectMatNear(const Mat4& a, const Mat4& b, double tol = 1e-12) {
   for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) EXPECT_NEAR(a(r, c), b(r, c), tol) << "at (" << r << "," << c << ")";
+    for (int c = 0; c < 4; ++c)
+      EXPECT_NEAR(a(r, c), b(r, c), tol) << "at (" << r << "," << c << ")";
 }
 
 TEST(Transforms, LookAtFromPlusZIsATranslation) {

@@ -13,7 +13,7 @@ struct Camera {
   double near = 0.1, far = 100;  // positive distances
   Mat4 view = Mat4::eye();
   Mat4 projection = Mat4::eye();
-  int width = 0, height = 0;     // pixels
+  int width = 0, height = 0;  // pixels
 };
 
 // The camera of a scene, with `fit` applied (SPEC §4): the viewing direction and up are kept,

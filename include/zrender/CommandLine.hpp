@@ -23,20 +23,20 @@ struct SceneOverrides {
 };
 
 struct RenderOptions {
-  std::string scene;                      // a settings key or a model file
+  std::string scene;  // a settings key or a model file
   std::string algorithm = "zbuffer";
   std::optional<std::filesystem::path> settings, output, depth, ids;
   int repeat = 1;
   bool json = false;
   bool stats = false;
-  int turntable = 0;                      // frames; 0 = a single image
+  int turntable = 0;  // frames; 0 = a single image
   std::optional<std::filesystem::path> contactSheet;
   SceneOverrides overrides;
 };
 
 struct BenchOptions {
-  std::vector<std::string> scenes;        // empty: every scene with "bench": true
-  std::vector<std::string> algorithms;    // empty: all
+  std::vector<std::string> scenes;      // empty: every scene with "bench": true
+  std::vector<std::string> algorithms;  // empty: all
   int repeat = 5;
   std::optional<std::filesystem::path> settings, markdown, json, chart;
   SceneOverrides overrides;

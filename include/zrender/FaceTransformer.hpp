@@ -34,9 +34,9 @@ class FaceTransformer {
   const Camera& camera_;
   int scale_;
   bool cull_;
-  std::vector<Mat4> mvp_;            // per instance, model to clip space
-  std::vector<Vec4> clip_;           // clip-space vertex (instance-major) when transformed
-  std::vector<uint8_t> clipReady_;   // lazy mode: vertex transformed this frame
+  std::vector<Mat4> mvp_;           // per instance, model to clip space
+  std::vector<Vec4> clip_;          // clip-space vertex (instance-major) when transformed
+  std::vector<uint8_t> clipReady_;  // lazy mode: vertex transformed this frame
   // Scratch buffers reused face after face.
   std::vector<Vec4> faceClip_, clipped_, clipScratch_;
   std::vector<Vec3> window_, guarded_, guardScratch_;

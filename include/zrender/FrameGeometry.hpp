@@ -15,8 +15,8 @@ struct ScreenFace {
   uint32_t vertexCount;    // >= 3
   uint32_t firstTriangle;  // pieces in FrameGeometry::triangles
   uint32_t triangleCount;
-  DepthPlane plane;        // window depth over the face, in sample coordinates
-  bool frontFacing;        // counter-clockwise in NDC
+  DepthPlane plane;  // window depth over the face, in sample coordinates
+  bool frontFacing;  // counter-clockwise in NDC
 };
 
 // A triangulation piece of a face, positively oriented (orient2d(v0, v1, v2) > 0). The face's

@@ -26,11 +26,11 @@ struct Corner {
 // index is its face id (SPEC §6). Faces keep all their corners; triangulation happens later, in
 // window space, so concave faces are right.
 struct Mesh {
-  std::vector<cv::Vec3d> positions;  // model space
-  std::vector<cv::Vec2d> texcoords;  // u right, v up (OBJ convention)
-  std::vector<cv::Vec3d> normals;    // model space, as given (not necessarily unit length)
-  std::vector<Corner> corners;       // the corners of all faces, face after face
-  std::vector<uint32_t> faceStart;   // face f owns corners [faceStart[f], faceStart[f + 1])
+  std::vector<cv::Vec3d> positions;   // model space
+  std::vector<cv::Vec2d> texcoords;   // u right, v up (OBJ convention)
+  std::vector<cv::Vec3d> normals;     // model space, as given (not necessarily unit length)
+  std::vector<Corner> corners;        // the corners of all faces, face after face
+  std::vector<uint32_t> faceStart;    // face f owns corners [faceStart[f], faceStart[f + 1])
   std::vector<int32_t> faceMaterial;  // index into materials, -1 for none; one per face
   std::vector<Material> materials;
 

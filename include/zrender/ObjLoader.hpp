@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "zrender/Error.hpp"
 #include "zrender/Mesh.hpp"
@@ -18,5 +19,11 @@ constexpr uint32_t kMaxFaceCorners = 4096;
 // texture file is a warning. Faces with fewer than 3 corners are kept (they get a face id) and
 // are skipped as degenerate when drawn.
 Mesh loadObj(const std::filesystem::path& path, Warnings& warnings);
+
+// The same loader on OBJ text already in memory (the fuzz targets use it): `nameForMessages`
+// starts every message, and the .mtl files named by mtllib are looked up beside it. loadObj is
+// this function after reading the file.
+Mesh loadObjFromText(const std::string& text, const std::filesystem::path& nameForMessages,
+                     Warnings& warnings);
 
 }  // namespace zrender

@@ -28,18 +28,30 @@ struct FixedPoint {
   bool operator!=(const FixedPoint& o) const { return !(*this == o); }
 };
 
-inline int32_t snapToSubpixel(double v) { return static_cast<int32_t>(std::lrint(v * kSubpixel)); }
+inline int32_t snapToSubpixel(double v) {
+  return static_cast<int32_t>(std::lrint(v * kSubpixel));
+}
 
 // Centre of sample column `i` (or row) in fixed point.
-inline int64_t sampleCentre(int i) { return int64_t(i) * kSubpixel + kHalfSubpixel; }
+inline int64_t sampleCentre(int i) {
+  return int64_t(i) * kSubpixel + kHalfSubpixel;
+}
 
 // Floor and ceiling of a / b for b > 0, exact for negative a too.
-inline int64_t floorDiv(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
-inline int64_t ceilDiv(int64_t a, int64_t b) { return a >= 0 ? (a + b - 1) / b : -((-a) / b); }
+inline int64_t floorDiv(int64_t a, int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
+inline int64_t ceilDiv(int64_t a, int64_t b) {
+  return a >= 0 ? (a + b - 1) / b : -((-a) / b);
+}
 
 // First and last sample index whose centre lies in [lo, hi] (fixed point); first > last if none.
-inline int firstSampleAtOrAfter(int64_t lo) { return int(ceilDiv(lo - kHalfSubpixel, kSubpixel)); }
-inline int lastSampleAtOrBefore(int64_t hi) { return int(floorDiv(hi - kHalfSubpixel, kSubpixel)); }
+inline int firstSampleAtOrAfter(int64_t lo) {
+  return int(ceilDiv(lo - kHalfSubpixel, kSubpixel));
+}
+inline int lastSampleAtOrBefore(int64_t hi) {
+  return int(floorDiv(hi - kHalfSubpixel, kSubpixel));
+}
 
 // Twice the signed area of (a, b, c) in fixed point; > 0 when c lies to the right of a->b as
 // seen in the image (y down), i.e. the turn a->b->c is clockwise on screen.
@@ -64,8 +76,8 @@ struct EdgeFunction {
     stepX = -dy * kSubpixel;
     stepY = dx * kSubpixel;
     const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
-    value = dx * (sampleCentre(originY) - a.y) - dy * (sampleCentre(originX) - a.x) -
-            (topLeft ? 0 : 1);
+    value =
+        dx * (sampleCentre(originY) - a.y) - dy * (sampleCentre(originX) - a.x) - (topLeft ? 0 : 1);
   }
   bool covers(int64_t v) const { return v >= 0; }
 };
@@ -127,8 +139,12 @@ inline float bitsToFloat(uint32_t u) {
 inline DepthKey makeDepthKey(float depth, uint32_t faceId) {
   return (DepthKey(floatBits(depth)) << 32) | faceId;
 }
-inline float keyDepth(DepthKey k) { return bitsToFloat(uint32_t(k >> 32)); }
-inline uint32_t keyFaceId(DepthKey k) { return uint32_t(k); }
+inline float keyDepth(DepthKey k) {
+  return bitsToFloat(uint32_t(k >> 32));
+}
+inline uint32_t keyFaceId(DepthKey k) {
+  return uint32_t(k);
+}
 
 // The cleared state: depth 1 (the far plane) and no face.
 constexpr DepthKey kClearKey = (DepthKey(0x3F800000u) << 32) | kBackgroundId;

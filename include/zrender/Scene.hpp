@@ -14,7 +14,7 @@ namespace zrender {
 // Everything that depends on the model and the settings but not on the frame: the mesh, its
 // grid instances and the diffuse texture. Built once, shared by all frames and algorithms.
 struct Scene {
-  SceneSettings settings;             // after command-line overrides and validation
+  SceneSettings settings;  // after command-line overrides and validation
   std::shared_ptr<const Mesh> mesh;
   std::vector<Vec3> instanceOffsets;  // grid offset of instance k, model units (SPEC §3)
   cv::Mat texture;                    // CV_8UC3 (BGR) or empty

@@ -28,11 +28,11 @@ class Shader {
     uint32_t stamp = 0;  // frame in which the entry was computed
     uint32_t data = 0;   // packed BGR color, or index into faceShade_ for per-sample modes
   };
-  struct FaceShade {   // view-space data of one face for per-sample interpolation
-    uint32_t first;    // into cornerPos_/cornerNormal_/cornerUv_
+  struct FaceShade {  // view-space data of one face for per-sample interpolation
+    uint32_t first;   // into cornerPos_/cornerNormal_/cornerUv_
     uint32_t count;
-    bool flip;         // back-facing: light the other side
-    cv::Vec3f base;    // material diffuse color, RGB 0..1
+    bool flip;       // back-facing: light the other side
+    cv::Vec3f base;  // material diffuse color, RGB 0..1
   };
 
   uint32_t faceColor(uint32_t faceId);
