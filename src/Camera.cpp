@@ -35,4 +35,11 @@ Camera makeCamera(const Scene& scene) {
   return cam;
 }
 
+Camera turntableCamera(const Camera& camera, double degrees) {
+  Camera turned = camera;
+  turned.view = camera.view * translation(camera.target) * rotation(degrees, camera.up) *
+                translation(-camera.target);
+  return turned;
+}
+
 }  // namespace zrender

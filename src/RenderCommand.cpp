@@ -88,8 +88,4 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   return 0;
 }
 
-int runBench(const BenchOptions&, std::ostream&, std::ostream&) {
-  throw InputError("command line: bench: not implemented yet");
-}
-
 }  // namespace zrender

@@ -22,4 +22,8 @@ struct Camera {
 // `eye` looks down -Z.
 Camera makeCamera(const Scene& scene);
 
+// The camera of turntable frame at `degrees`: the model turned about the camera's up axis
+// through the target (right-hand rule), which is the view composed with that rotation.
+Camera turntableCamera(const Camera& camera, double degrees);
+
 }  // namespace zrender

@@ -1,0 +1,239 @@
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/Chart.hpp"
+#include "zrender/CommandLine.hpp"
+#include "zrender/Error.hpp"
+#include "zrender/ImageOutput.hpp"
+#include "zrender/ObjLoader.hpp"
+#include "zrender/Renderer.hpp"
+#include "zrender/Report.hpp"
+
+namespace zrender {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct BenchRow {
+  std::string scene, algorithm;
+  int width = 0, height = 0, msaa = 1;
+  uint64_t faces = 0;
+  double prepareMs = 0, transformMs = 0, rasterMs = 0, rasterMinMs = 0, frameMs = 0;
+  double rasterSpeedup = 0, frameSpeedup = 0;
+  RenderStats stats;
+  bool identical = true;
+};
+
+std::string machineName() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) {
+        std::string name = line.substr(colon + 1);
+        name.erase(0, name.find_first_not_of(' '));
+        return name + ", " + std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores";
+      }
+    }
+  }
+  return "unknown machine";
+}
+
+std::string today() {
+  char buf[32];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&t));
+  return buf;
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::string markdownTable(const std::vector<BenchRow>& rows, int repeat) {
+  std::ostringstream md;
+  md << "zrender bench: median of " << repeat << " frames, one thread, " << machineName() << ", "
+     << today() << "\n\n";
+  md << "| scene | size | algorithm | raster ms | frame ms | raster speed-up | frame speed-up | "
+        "prepare ms | triangles culled by HZB | octree nodes culled | identical |\n";
+  md << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const BenchRow& r : rows) {
+    md << "| " << r.scene << " | " << r.width << "x" << r.height << (r.msaa == 4 ? " MSAA4" : "")
+       << " | " << r.algorithm << " | " << fixed(r.rasterMs, 2) << " | " << fixed(r.frameMs, 2)
+       << " | " << fixed(r.rasterSpeedup, 2) << "x | " << fixed(r.frameSpeedup, 2) << "x | "
+       << fixed(r.prepareMs, 1) << " | " << r.stats.trianglesHzbCulled << " | "
+       << r.stats.octreeNodesCulled << "/" << r.stats.octreeNodesVisited << " | "
+       << (r.identical ? "yes" : "**NO**") << " |\n";
+  }
+  return md.str();
+}
+
+Json::Value rowToJson(const BenchRow& r) {
+  Json::Value j(Json::objectValue);
+  j["scene"] = r.scene;
+  j["algorithm"] = r.algorithm;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["msaa"] = r.msaa;
+  j["faces"] = Json::UInt64(r.faces);
+  j["prepare_ms"] = r.prepareMs;
+  j["transform_ms"] = r.transformMs;
+  j["raster_ms"] = r.rasterMs;
+  j["raster_ms_min"] = r.rasterMinMs;
+  j["frame_ms"] = r.frameMs;
+  j["raster_speedup"] = r.rasterSpeedup;
+  j["frame_speedup"] = r.frameSpeedup;
+  j["identical"] = r.identical;
+  j["stats"] = statsToJson(r.stats);
+  return j;
+}
+
+void writeTextAtomically(const fs::path& path, const std::string& text) {
+  std::error_code ec;
+  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
+  const fs::path tmp =
+      path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) {
+      fs::remove(tmp, ec);
+      throw InputError(path.string() + ": cannot write file");
+    }
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw InputError(path.string() + ": cannot write file: " + ec.message());
+  }
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
+  Warnings warnings;
+  auto flushWarnings = [&] {
+    for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
+    warnings.clear();
+  };
+  // The z-buffer is the reference every algorithm is compared with, so it always runs first.
+  std::vector<std::string> algorithms = {"zbuffer"};
+  for (const auto& a : options.algorithms.empty() ? algorithmNames() : options.algorithms) {
+    makeAlgorithm(a);  // an unknown name fails before any work
+    if (std::find(algorithms.begin(), algorithms.end(), a) == algorithms.end())
+      algorithms.push_back(a);
+  }
+  if (options.chart) checkOutputExtension(*options.chart, {".png"}, "chart");
+
+  std::vector<std::string> scenes = options.scenes;
+  if (scenes.empty()) {
+    const fs::path path = options.settings ? *options.settings : defaultSettingsPath();
+    if (path.empty()) throw InputError("bench: no settings.json found and no scene given");
+    for (const auto& [name, scene] : loadSettings(path, warnings).scenes)
+      if (scene.bench) scenes.push_back(name);
+    flushWarnings();
+    if (scenes.empty())
+      throw InputError(path.string() + ": no scene has \"bench\": true and no scene was given");
+  }
+
+  const bool tty = isatty(STDERR_FILENO);
+  std::vector<BenchRow> rows;
+  size_t disagreements = 0;
+  for (const std::string& sceneName : scenes) {
+    const SceneSettings settings =
+        resolveScene(sceneName, options.settings, options.overrides, warnings);
+    auto mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
+    const Scene scene = makeScene(settings, mesh, warnings);
+    flushWarnings();
+    const Camera camera = makeCamera(scene);
+    FrameBuffer reference;
+    cv::Mat referenceColor;
+    double referenceRaster = 0, referenceFrame = 0;
+    for (const std::string& algorithm : algorithms) {
+      Renderer renderer(scene, algorithm);
+      std::vector<double> transform, raster, frame;
+      for (int i = 0; i < options.repeat; ++i) {
+        if (tty)
+          err << "\rbench: " << sceneName << " " << algorithm << " frame " << (i + 1) << "/"
+              << options.repeat << "   " << std::flush;
+        const FrameTimings t = renderer.renderFrame(camera);
+        transform.push_back(t.transformMs);
+        raster.push_back(t.rasterMs);
+        frame.push_back(t.frameMs());
+      }
+      BenchRow row;
+      row.scene = sceneName;
+      row.algorithm = algorithm;
+      row.width = settings.width;
+      row.height = settings.height;
+      row.msaa = settings.msaa;
+      row.faces = scene.faceCount();
+      row.prepareMs = renderer.prepareMs();
+      row.transformMs = median(transform);
+      row.rasterMs = median(raster);
+      row.rasterMinMs = *std::min_element(raster.begin(), raster.end());
+      row.frameMs = median(frame);
+      row.stats = renderer.stats();
+      if (algorithm == "zbuffer") {
+        reference = renderer.buffer();
+        referenceColor = renderer.color().clone();
+        referenceRaster = row.rasterMs;
+        referenceFrame = row.frameMs;
+      } else {
+        // Keys hold depth and id, so equal keys mean equal depth and id buffers.
+        row.identical =
+            renderer.buffer() == reference &&
+            cv::countNonZero(cv::Mat(renderer.color() != referenceColor).reshape(1)) == 0;
+      }
+      row.rasterSpeedup = row.rasterMs > 0 ? referenceRaster / row.rasterMs : 0;
+      row.frameSpeedup = row.frameMs > 0 ? referenceFrame / row.frameMs : 0;
+      disagreements += !row.identical;
+      rows.push_back(row);
+    }
+  }
+  if (tty) err << "\r" << std::string(60, ' ') << "\r";
+
+  const std::string table = markdownTable(rows, options.repeat);
+  out << table;
+  if (options.markdown) writeTextAtomically(*options.markdown, table);
+  if (options.json) {
+    Json::Value all(Json::arrayValue);
+    for (const BenchRow& r : rows) all.append(rowToJson(r));
+    Json::StreamWriterBuilder builder;
+    builder["indentation"] = "  ";
+    builder["precision"] = 3;
+    builder["precisionType"] = "decimal";
+    writeTextAtomically(*options.json, Json::writeString(builder, all) + "\n");
+  }
+  if (options.chart) {
+    std::vector<ChartGroup> groups;
+    for (const BenchRow& r : rows) {
+      if (groups.empty() || groups.back().caption.rfind(r.scene, 0) != 0)
+        groups.push_back(ChartGroup{r.scene + " (" + std::to_string(r.width) + "x" +
+                                        std::to_string(r.height) + ", frame ms)",
+                                    {}});
+      groups.back().bars.push_back(ChartBar{r.algorithm, r.frameMs});
+    }
+    writeImageAtomically(
+        *options.chart,
+        drawBarChart("zrender bench: median frame time (ms), lower is better", groups));
+  }
+  err << "bench: " << scenes.size() << " scene(s) x " << algorithms.size() << " algorithm(s): "
+      << (disagreements ? std::to_string(disagreements) + " disagree with zbuffer"
+                        : std::string("all identical to zbuffer"))
+      << "\n";
+  return disagreements ? 1 : 0;
+}
+
+}  // namespace zrender
