@@ -4,9 +4,13 @@
 #include <json/json.h>
 
 #include <filesystem>
+#include <fstream>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "TestSupport.hpp"
+#include "zrender/VisibilityAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -207,6 +211,76 @@ TEST(CommandLine, UnknownSceneListsTheScenes) {
   dir.write("sq.obj", kSquare);
   dir.write("settings.json", settingsFor("sq.obj"));
   expectCleanError(runZrender({"cube"}, dir.path), {"settings.json", "cube", "sq"});
+}
+
+}  // namespace
+}  // namespace zrender
+
+namespace zrender {
+namespace {
+
+TEST(Turntable, WritesEveryFrameAndAContactSheet) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  const auto r = runZrender({"sq", "--turntable", "4", "-o", dir.file("f/%02d.png"), "--no-cull",
+                             "--contact-sheet", dir.file("sheet.png"), "--json"},
+                            dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 4);  // a JSON line per frame
+  for (int i = 0; i < 4; ++i) EXPECT_TRUE(fs::exists(dir.file("f/0" + std::to_string(i) + ".png")));
+  // Frame 1 is a quarter turn about the vertical axis: the square is seen edge-on, so
+  // (almost) nothing is drawn, while frame 0 shows it whole; frame 2 shows its back.
+  const cv::Mat f0 = cv::imread(dir.file("f/00.png")), f1 = cv::imread(dir.file("f/01.png"));
+  cv::Mat gray0, gray1;
+  cv::cvtColor(f0, gray0, cv::COLOR_BGR2GRAY);
+  cv::cvtColor(f1, gray1, cv::COLOR_BGR2GRAY);
+  EXPECT_EQ(cv::countNonZero(gray0), 256);
+  EXPECT_LT(cv::countNonZero(gray1), 40);
+  const cv::Mat sheet = cv::imread(dir.file("sheet.png"));
+  EXPECT_EQ(sheet.cols, 64);  // 2 x 2 tiles of 32 x 32
+  EXPECT_EQ(sheet.rows, 64);
+}
+
+TEST(Turntable, WritesAVideo) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  const auto r = runZrender({"sq", "--turntable", "6", "-o", dir.file("spin.avi")}, dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  cv::VideoCapture video(dir.file("spin.avi"));
+  ASSERT_TRUE(video.isOpened());
+  EXPECT_EQ(int(video.get(cv::CAP_PROP_FRAME_COUNT)), 6);
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 3);
+}
+
+TEST(Turntable, PatternWithoutADirectiveIsRefused) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  expectCleanError(runZrender({"sq", "--turntable", "3", "-o", dir.file("x.png")}, dir.path),
+                   {"%d", "x.png"});
+}
+
+TEST(Bench, PrintsAVerifiedTableAndWritesItsFiles) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj", R"(, "bench": true)"));
+  const auto r = runZrender({"bench", "--repeat", "2", "--markdown", dir.file("t.md"), "--json",
+                             dir.file("t.json"), "--chart", dir.file("c.png")},
+                            dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const auto& name : algorithmNames())
+    EXPECT_NE(r.out.find("| sq | 32x32 | " + name + " |"), std::string::npos) << name;
+  EXPECT_EQ(r.out.find("**NO**"), std::string::npos);
+  EXPECT_NE(r.err.find("all identical to zbuffer"), std::string::npos);
+  EXPECT_TRUE(fs::exists(dir.file("t.md")));
+  EXPECT_FALSE(cv::imread(dir.file("c.png")).empty());
+  std::ifstream json(dir.file("t.json"));
+  Json::Value rows;
+  json >> rows;
+  ASSERT_EQ(rows.size(), algorithmNames().size());
+  EXPECT_TRUE(rows[0]["identical"].asBool());
 }
 
 }  // namespace
