@@ -11,9 +11,21 @@ foreach(_part IN LISTS _zr_parts)
 endforeach()
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(OpenCVParts REQUIRED_VARS OpenCVParts_INCLUDE_DIR ${_zr_required})
-if(OpenCVParts_FOUND AND NOT TARGET OpenCV::Parts)
+# OpenCV::Core: core and imgproc, light to load. OpenCV::Codecs: imgcodecs and videoio, whose
+# Debian builds pull in some 200 shared libraries; only the codec plugin and the tests link them.
+if(OpenCVParts_FOUND AND NOT TARGET OpenCV::Core)
+  add_library(OpenCV::Core INTERFACE IMPORTED)
+  set_target_properties(OpenCV::Core PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${OpenCVParts_core_LIBRARY};${OpenCVParts_imgproc_LIBRARY}")
+  add_library(OpenCV::Codecs INTERFACE IMPORTED)
+  set_target_properties(OpenCV::Codecs PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${OpenCVParts_imgcodecs_LIBRARY};${OpenCVParts_videoio_LIBRARY};OpenCV::Core")
+  # All four parts plus what src/ImageCodecs.cpp needs, for builds that compile src/*.cpp
+  # themselves (the fuzzers).
+  find_package(PNG REQUIRED)
   add_library(OpenCV::Parts INTERFACE IMPORTED)
   set_target_properties(OpenCV::Parts PROPERTIES
-    INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
-    INTERFACE_LINK_LIBRARIES "${OpenCVParts_LIBRARIES}")
+    INTERFACE_LINK_LIBRARIES "OpenCV::Codecs;PNG::PNG;${CMAKE_DL_LIBS}")
 endif()

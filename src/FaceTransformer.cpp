@@ -16,124 +16,173 @@ FaceTransformer::FaceTransformer(const Scene& scene, const Camera& camera, int s
     mvp_.push_back(viewProjection * scene.modelMatrix(k));
 }
 
+void FaceTransformer::computeVertex(const Mat4& m, const Vec3& p, Vertex& v) const {
+  v.clip = m * Vec4(p[0], p[1], p[2], 1.0);
+  const Vec4& c = v.clip;
+  if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]))) {
+    v.code = kNotFinite;
+    return;
+  }
+  v.code = (c[0] < -c[3]) | (c[0] > c[3]) << 1 | (c[1] < -c[3]) << 2 | (c[1] > c[3]) << 3 |
+           (c[2] < -c[3]) << 4 | (c[2] > c[3]) << 5;
+  if (v.code & (kNear | kFar)) return;
+  v.window = clipToWindow(c, camera_.width, camera_.height);
+  const double guard = kGuardBand / scale_;
+  if (std::abs(v.window[0]) > guard || std::abs(v.window[1]) > guard) {
+    v.code |= kGuard;
+    return;
+  }
+  // Snap to 1/256 pixel, then scale to samples.
+  v.snapped = {snapToSubpixel(v.window[0]) * scale_, snapToSubpixel(v.window[1]) * scale_};
+}
+
 void FaceTransformer::transformAll(FrameGeometry& out) {
   const Mesh& mesh = *scene_.mesh;
   const size_t nv = mesh.positions.size();
-  clip_.resize(nv * scene_.instanceCount());
-  for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
-    const Mat4& m = mvp_[k];
-    Vec4* dst = clip_.data() + size_t(k) * nv;
-    for (size_t v = 0; v < nv; ++v) {
-      const Vec3& p = mesh.positions[v];
-      dst[v] = m * Vec4(p[0], p[1], p[2], 1.0);
-    }
-  }
+  vertices_.resize(nv * scene_.instanceCount());
+  for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
+    for (size_t v = 0; v < nv; ++v)
+      computeVertex(mvp_[k], mesh.positions[v], vertices_[size_t(k) * nv + v]);
   out.width = camera_.width * scale_;
   out.height = camera_.height * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
-    const Vec4* base = clip_.data() + size_t(k) * nv;
+    const Vertex* base = vertices_.data() + size_t(k) * nv;
     for (uint32_t f = 0; f < nf; ++f) {
       const uint32_t n = mesh.cornerCount(f);
       const Corner* c = mesh.faceCorners(f);
-      faceClip_.resize(n);
-      for (uint32_t i = 0; i < n; ++i) faceClip_[i] = base[c[i].position];
-      appendFace(k * nf + f, faceClip_.data(), n, out);
+      corners_.resize(n);
+      for (uint32_t i = 0; i < n; ++i) corners_[i] = base + c[i].position;
+      appendFace(k * nf + f, corners_.data(), n, out);
     }
   }
 }
 
-const Vec4& FaceTransformer::lazyClipVertex(uint32_t instance, int32_t vertex) {
-  const size_t nv = scene_.mesh->positions.size();
-  if (clip_.size() != nv * scene_.instanceCount()) {
-    clip_.resize(nv * scene_.instanceCount());
-    clipReady_.assign(clip_.size(), 0);
-  }
-  const size_t i = size_t(instance) * nv + size_t(vertex);
-  if (!clipReady_[i]) {
-    const Vec3& p = scene_.mesh->positions[size_t(vertex)];
-    clip_[i] = mvp_[instance] * Vec4(p[0], p[1], p[2], 1.0);
-    clipReady_[i] = 1;
-  }
-  return clip_[i];
-}
-
 void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   const Mesh& mesh = *scene_.mesh;
+  const size_t nv = mesh.positions.size();
+  if (vertices_.size() != nv * scene_.instanceCount()) {
+    Vertex pending;
+    pending.code = kNotComputed;
+    vertices_.assign(nv * scene_.instanceCount(), pending);
+  }
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
   out.width = camera_.width * scale_;
   out.height = camera_.height * scale_;
   const uint32_t n = mesh.cornerCount(f);
   const Corner* c = mesh.faceCorners(f);
-  faceClip_.resize(n);
-  for (uint32_t i = 0; i < n; ++i) faceClip_[i] = lazyClipVertex(k, c[i].position);
-  appendFace(faceId, faceClip_.data(), n, out);
+  corners_.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    Vertex& v = vertices_[size_t(k) * nv + size_t(c[i].position)];
+    if (v.code == kNotComputed) computeVertex(mvp_[k], mesh.positions[size_t(c[i].position)], v);
+    corners_[i] = &v;
+  }
+  appendFace(faceId, corners_.data(), n, out);
 }
 
-void FaceTransformer::appendFace(uint32_t faceId, const Vec4* clip, uint32_t n,
+DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok) const {
+  // Newell's normal of the window-space polygon (x, y in samples, z depth), through the
+  // centroid: z = a x + b y + c. From the unsnapped positions.
+  Vec3 normal(0, 0, 0), centre(0, 0, 0);
+  for (uint32_t i = 0; i < count; ++i) {
+    const Vec3& pw = window[i];
+    const Vec3& qw = window[i + 1 == count ? 0 : i + 1];
+    const Vec3 p(pw[0] * scale_, pw[1] * scale_, pw[2]), q(qw[0] * scale_, qw[1] * scale_, qw[2]);
+    normal += Vec3((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
+                   (p[0] - q[0]) * (p[1] + q[1]));
+    centre += p;
+  }
+  centre *= 1.0 / count;
+  DepthPlane plane;
+  ok = normal[2] != 0.0 && std::isfinite(normal[2]);
+  if (!ok) return plane;
+  plane.a = -normal[0] / normal[2];
+  plane.b = -normal[1] / normal[2];
+  plane.c = centre[2] - plane.a * centre[0] - plane.b * centre[1];
+  return plane;
+}
+
+void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, uint32_t n,
                                  FrameGeometry& out) {
   TransformCounters& counters = out.counters;
-  const uint64_t pieces = n >= 3 ? n - 2 : 1;
+  const uint64_t pieces = n >= 3 ? n - 2 : 1;  // counters are in triangles
   if (n < 3) {
     counters.degenerate += pieces;
     return;
   }
-  // Outcodes: a face wholly beyond one plane of the view volume covers nothing.
-  unsigned all = 0x3F, any = 0;
+  uint32_t all = ~0u, any = 0;
   for (uint32_t i = 0; i < n; ++i) {
-    const Vec4& p = clip[i];
-    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) &&
-          std::isfinite(p[3]))) {
-      counters.degenerate += pieces;
-      return;
-    }
-    const unsigned code = (p[0] < -p[3]) | (p[0] > p[3]) << 1 | (p[1] < -p[3]) << 2 |
-                          (p[1] > p[3]) << 3 | (p[2] < -p[3]) << 4 | (p[2] > p[3]) << 5;
-    all &= code;
-    any |= code;
+    all &= corners[i]->code;
+    any |= corners[i]->code;
   }
-  if (all) {
+  if (any & kNotFinite) {
+    counters.degenerate += pieces;
+    return;
+  }
+  if (all & 0x3F) {  // wholly beyond one plane of the view volume: covers nothing
     counters.clippedAway += pieces;
     return;
   }
-  const Vec4* poly = clip;
+  if (any & kNeedsClip) {
+    appendClippedFace(faceId, corners, n, pieces, out);
+    return;
+  }
+  // Common case: every corner inside near/far and the guard band, already snapped.
+  snapped_.clear();
+  for (uint32_t i = 0; i < n; ++i) {
+    const FixedPoint& p = corners[i]->snapped;
+    if (snapped_.empty() || p != snapped_.back()) snapped_.push_back(p);
+  }
+  // Back faces are known from the snapped corners alone: decide before the plane's divisions.
+  if (snapped_.size() == 3 && cull_) {
+    const int64_t area = orient2d(snapped_[0], snapped_[1], snapped_[2]);
+    if (area > 0) {  // clockwise in NDC (y points down here)
+      counters.backfaceCulled += pieces;
+      return;
+    }
+  }
+  window_.resize(n);
+  for (uint32_t i = 0; i < n; ++i) window_[i] = corners[i]->window;
+  bool ok = false;
+  const DepthPlane plane = planeOf(window_.data(), n, ok);
+  if (!ok) {
+    counters.degenerate += pieces;
+    return;
+  }
+  appendSnappedFace(faceId, plane, pieces, out);
+}
+
+void FaceTransformer::appendClippedFace(uint32_t faceId, const Vertex* const* corners, uint32_t n,
+                                        uint64_t pieces, FrameGeometry& out) {
+  TransformCounters& counters = out.counters;
+  faceClip_.resize(n);
+  uint32_t any = 0;
+  for (uint32_t i = 0; i < n; ++i) {
+    faceClip_[i] = corners[i]->clip;
+    any |= corners[i]->code;
+  }
+  const Vec4* poly = faceClip_.data();
   uint32_t count = n;
-  if (any & 0x30) {
+  if (any & (kNear | kFar)) {
     clipped_.resize(n + 2);
     clipScratch_.resize(n + 2);
-    count = uint32_t(clipNearFar(clip, n, clipped_.data(), clipScratch_.data()));
+    count = uint32_t(clipNearFar(poly, n, clipped_.data(), clipScratch_.data()));
     if (count == 0) {
       counters.clippedAway += pieces;
       return;
     }
     poly = clipped_.data();
   }
-
-  // Window coordinates in pixels (x right, y down, z depth 0..1).
   window_.resize(count);
   for (uint32_t i = 0; i < count; ++i)
     window_[i] = clipToWindow(poly[i], camera_.width, camera_.height);
-
-  // Depth plane z = a x + b y + c in sample coordinates, from the unsnapped positions.
-  Vec3 normal(0, 0, 0), centre(0, 0, 0);
-  for (uint32_t i = 0; i < count; ++i) {
-    const Vec3 p = Vec3(window_[i][0] * scale_, window_[i][1] * scale_, window_[i][2]);
-    const Vec3& qw = window_[(i + 1) % count];
-    const Vec3 q = Vec3(qw[0] * scale_, qw[1] * scale_, qw[2]);
-    normal += Vec3((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
-                   (p[0] - q[0]) * (p[1] + q[1]));
-    centre += p;
-  }
-  centre *= 1.0 / count;
-  if (normal[2] == 0.0 || !std::isfinite(normal[2])) {
+  bool ok = false;
+  const DepthPlane plane = planeOf(window_.data(), count, ok);
+  if (!ok) {
     counters.degenerate += pieces;
     return;
   }
-  DepthPlane plane;
-  plane.a = -normal[0] / normal[2];
-  plane.b = -normal[1] / normal[2];
-  plane.c = centre[2] - plane.a * centre[0] - plane.b * centre[1];
 
   // Keep snapped coordinates in range however far outside the image the face reaches.
   const double guard = kGuardBand / scale_;
@@ -151,13 +200,17 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vec4* clip, uint32_t n,
     }
     win = guarded_.data();
   }
-
-  // Snap to 1/256 pixel, then scale to samples; drop repeated corners.
   snapped_.clear();
   for (uint32_t i = 0; i < count; ++i) {
     const FixedPoint p{snapToSubpixel(win[i][0]) * scale_, snapToSubpixel(win[i][1]) * scale_};
     if (snapped_.empty() || p != snapped_.back()) snapped_.push_back(p);
   }
+  appendSnappedFace(faceId, plane, pieces, out);
+}
+
+void FaceTransformer::appendSnappedFace(uint32_t faceId, const DepthPlane& plane, uint64_t pieces,
+                                        FrameGeometry& out) {
+  TransformCounters& counters = out.counters;
   while (snapped_.size() > 1 && snapped_.back() == snapped_.front()) snapped_.pop_back();
   if (snapped_.size() < 3) {
     counters.degenerate += pieces;
@@ -166,7 +219,7 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vec4* clip, uint32_t n,
   __int128 area = 0;
   for (size_t i = 0; i < snapped_.size(); ++i) {
     const FixedPoint& a = snapped_[i];
-    const FixedPoint& b = snapped_[(i + 1) % snapped_.size()];
+    const FixedPoint& b = snapped_[i + 1 == snapped_.size() ? 0 : i + 1];
     area += __int128(int64_t(a.x) * b.y - int64_t(b.x) * a.y);
   }
   if (area == 0) {
@@ -180,8 +233,11 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vec4* clip, uint32_t n,
     return;
   }
   pieces_.clear();
-  if (!triangulatePolygon(snapped_.data(), uint32_t(snapped_.size()), pieces_, ring_) ||
-      pieces_.empty()) {
+  if (snapped_.size() == 3) {
+    pieces_.push_back(frontFacing ? std::array<uint32_t, 3>{0, 2, 1}
+                                  : std::array<uint32_t, 3>{0, 1, 2});
+  } else if (!triangulatePolygon(snapped_.data(), uint32_t(snapped_.size()), pieces_, ring_) ||
+             pieces_.empty()) {
     counters.degenerate += pieces;
     return;
   }

@@ -8,9 +8,8 @@
 #include <string>
 #include <system_error>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "zrender/Error.hpp"
+#include "zrender/ImageCodecs.hpp"
 
 namespace zrender {
 
@@ -59,18 +58,11 @@ void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& imag
     fs::create_directories(parent, ec);
     if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
   }
-  // Same folder (so rename is atomic), same extension (imwrite picks the codec from it).
+  // Same folder (so rename is atomic), same extension (the codec is chosen from it).
   const fs::path tmp = parent / ("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) +
                                  path.extension().string());
-  bool ok = false;
-  std::string reason = "cannot write file";
-  try {
-    ok = cv::imwrite(tmp.string(), image);
-  } catch (const cv::Exception& e) {
-    reason = "cannot encode image: " + e.msg;
-    reason.erase(std::remove(reason.begin(), reason.end(), '\n'), reason.end());
-  }
-  if (!ok) {
+  std::string reason;
+  if (!encodeImageFile(tmp, image, reason)) {
     fs::remove(tmp, ec);
     throw InputError(path.string() + ": " + reason);
   }

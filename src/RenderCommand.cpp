@@ -5,11 +5,11 @@
 #include <memory>
 
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "zrender/Camera.hpp"
 #include "zrender/CommandLine.hpp"
 #include "zrender/Error.hpp"
+#include "zrender/ImageCodecs.hpp"
 #include "zrender/ImageOutput.hpp"
 #include "zrender/ObjLoader.hpp"
 #include "zrender/Renderer.hpp"
@@ -120,7 +120,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   const bool tty = isatty(STDERR_FILENO);
 
   // Video frames go to a temporary file renamed at the end: complete or not at all.
-  cv::VideoWriter video;
+  std::unique_ptr<VideoFile> video;
   fs::path videoTmp;
   struct RemoveOnExit {  // the temporary video, unless it was renamed into place
     fs::path& path;
@@ -135,11 +135,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     videoTmp =
         colorPath.parent_path() / ("." + colorPath.stem().string() + ".tmp-" +
                                    std::to_string(::getpid()) + colorPath.extension().string());
-    const bool mp4 = colorPath.extension() == ".mp4" || colorPath.extension() == ".MP4";
-    const int fourcc = mp4 ? cv::VideoWriter::fourcc('m', 'p', '4', 'v')
-                           : cv::VideoWriter::fourcc('M', 'J', 'P', 'G');
-    video.open(videoTmp.string(), fourcc, 30.0, cv::Size(settings.width, settings.height));
-    if (!video.isOpened())
+    video = std::make_unique<VideoFile>(videoTmp, settings.width, settings.height, 30.0);
+    if (!video->isOpen())
       throw InputError(colorPath.string() + ": cannot open a video writer for this format");
   }
   std::vector<cv::Mat> sheetFrames;
@@ -157,8 +154,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     }
 
     const double writeStart = nowMs();
-    if (video.isOpened()) {
-      video.write(renderer.color());
+    if (video) {
+      video->write(renderer.color());
     } else {
       const fs::path path = turntable ? fs::path(framePath(colorPath.string(), frame)) : colorPath;
       writeImageAtomically(path, renderer.color());
@@ -201,8 +198,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   }
   if (turntable && tty) err << "\r" << std::string(40, ' ') << "\r";
 
-  if (video.isOpened()) {
-    video.release();
+  if (video) {
+    video->close();
     std::error_code ec;
     fs::rename(videoTmp, colorPath, ec);
     if (ec) throw InputError(colorPath.string() + ": cannot write file: " + ec.message());

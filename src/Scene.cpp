@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <opencv2/imgcodecs.hpp>
+#include "zrender/ImageCodecs.hpp"
 
 namespace zrender {
 
@@ -76,9 +76,10 @@ Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
     }
   }
   if (!texturePath.empty()) {
-    scene.texture = cv::imread(texturePath, cv::IMREAD_COLOR);
+    std::string error;
+    scene.texture = decodeColorImage(texturePath, error);
     if (scene.texture.empty())
-      warnings.push_back(texturePath + ": texture cannot be read as an image (ignored)");
+      warnings.push_back(texturePath + ": texture " + error + " (ignored)");
   }
   return scene;
 }

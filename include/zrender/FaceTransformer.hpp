@@ -20,24 +20,51 @@ class FaceTransformer {
   void transformAll(FrameGeometry& out);
 
   // One face (global id); its vertices are transformed on first use in this frame. For
-  // algorithms that skip most of the model (the octree).
+  // algorithms that skip most of the model (the octree). Gives the same result as
+  // transformAll() for that face.
   void transformFace(uint32_t faceId, FrameGeometry& out);
 
   const Mat4& modelViewProjection(uint32_t instance) const { return mvp_[instance]; }
   int sampleScale() const { return scale_; }
 
  private:
-  void appendFace(uint32_t faceId, const Vec4* clip, uint32_t count, FrameGeometry& out);
-  const Vec4& lazyClipVertex(uint32_t instance, int32_t vertex);
+  // A vertex of one instance after the model-view-projection.
+  struct Vertex {
+    Vec4 clip;
+    Vec3 window;               // pixels and depth; valid when `code` has no kNeedsClip bit
+    FixedPoint snapped{0, 0};  // 1/256 sample units; valid likewise
+    uint32_t code = 0;         // outcode bits below; kNotComputed until transformed (lazy mode)
+  };
+  enum : uint32_t {
+    kLeft = 1,
+    kRight = 2,
+    kBelow = 4,
+    kAbove = 8,
+    kNear = 16,
+    kFar = 32,        // outside that plane
+    kNotFinite = 64,  // a coordinate is NaN or infinite: the face is skipped
+    kGuard = 128,     // inside near/far but beyond the guard band: needs the 2D clip
+    kNotComputed = 256,
+  };
+  static constexpr uint32_t kNeedsClip = kNear | kFar | kGuard | kNotFinite;
+
+  void computeVertex(const Mat4& mvp, const Vec3& position, Vertex& v) const;
+  void appendFace(uint32_t faceId, const Vertex* const* corners, uint32_t count,
+                  FrameGeometry& out);
+  void appendClippedFace(uint32_t faceId, const Vertex* const* corners, uint32_t count,
+                         uint64_t pieces, FrameGeometry& out);
+  void appendSnappedFace(uint32_t faceId, const DepthPlane& plane, uint64_t pieces,
+                         FrameGeometry& out);
+  DepthPlane planeOf(const Vec3* window, uint32_t count, bool& ok) const;
 
   const Scene& scene_;
   const Camera& camera_;
   int scale_;
   bool cull_;
-  std::vector<Mat4> mvp_;           // per instance, model to clip space
-  std::vector<Vec4> clip_;          // clip-space vertex (instance-major) when transformed
-  std::vector<uint8_t> clipReady_;  // lazy mode: vertex transformed this frame
+  std::vector<Mat4> mvp_;         // per instance, model to clip space
+  std::vector<Vertex> vertices_;  // instance-major
   // Scratch buffers reused face after face.
+  std::vector<const Vertex*> corners_;
   std::vector<Vec4> faceClip_, clipped_, clipScratch_;
   std::vector<Vec3> window_, guarded_, guardScratch_;
   std::vector<FixedPoint> snapped_;
