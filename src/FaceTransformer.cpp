@@ -84,6 +84,20 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
 DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok) const {
   // Newell's normal of the window-space polygon (x, y in samples, z depth), through the
   // centroid: z = a x + b y + c. From the unsnapped positions.
+  if (count == 3) {
+    // A triangle's plane through its first corner: fewer operations than Newell's sum.
+    const Vec3 p(window[0][0] * scale_, window[0][1] * scale_, window[0][2]);
+    const Vec3 u(window[1][0] * scale_ - p[0], window[1][1] * scale_ - p[1], window[1][2] - p[2]);
+    const Vec3 v(window[2][0] * scale_ - p[0], window[2][1] * scale_ - p[1], window[2][2] - p[2]);
+    const Vec3 normal = u.cross(v);
+    DepthPlane plane;
+    ok = normal[2] != 0.0 && std::isfinite(normal[2]);
+    if (!ok) return plane;
+    plane.a = -normal[0] / normal[2];
+    plane.b = -normal[1] / normal[2];
+    plane.c = p[2] - plane.a * p[0] - plane.b * p[1];
+    return plane;
+  }
   Vec3 normal(0, 0, 0), centre(0, 0, 0);
   for (uint32_t i = 0; i < count; ++i) {
     const Vec3& pw = window[i];
@@ -128,7 +142,11 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, 
     appendClippedFace(faceId, corners, n, pieces, out);
     return;
   }
-  // Common case: every corner inside near/far and the guard band, already snapped.
+  if (n == 3) {
+    appendTriangle(faceId, corners, out);
+    return;
+  }
+  // Every corner inside near/far and the guard band, already snapped.
   snapped_.clear();
   for (uint32_t i = 0; i < n; ++i) {
     const FixedPoint& p = corners[i]->snapped;
@@ -153,6 +171,50 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, 
   appendSnappedFace(faceId, plane, pieces, out);
 }
 
+void FaceTransformer::appendTriangle(uint32_t faceId, const Vertex* const* corners,
+                                     FrameGeometry& out) {
+  // The common case, kept short: a triangle inside near/far and the guard band. Same result
+  // as appendSnappedFace() would give, without its scratch buffers.
+  TransformCounters& counters = out.counters;
+  const FixedPoint& a = corners[0]->snapped;
+  const FixedPoint& b = corners[1]->snapped;
+  const FixedPoint& c = corners[2]->snapped;
+  const int64_t area = orient2d(a, b, c);
+  if (area == 0) {
+    counters.degenerate += 1;
+    return;
+  }
+  // y points down in window space, so counter-clockwise in NDC is a negative area here.
+  const bool frontFacing = area < 0;
+  if (cull_ && !frontFacing) {
+    counters.backfaceCulled += 1;
+    return;
+  }
+  const Vec3 window[3] = {corners[0]->window, corners[1]->window, corners[2]->window};
+  bool ok = false;
+  const DepthPlane plane = planeOf(window, 3, ok);
+  if (!ok) {
+    counters.degenerate += 1;
+    return;
+  }
+  ScreenFace face;
+  face.id = faceId;
+  face.firstVertex = uint32_t(out.vertices.size());
+  face.vertexCount = 3;
+  face.firstTriangle = uint32_t(out.triangles.size());
+  face.triangleCount = 1;
+  face.plane = plane;
+  face.frontFacing = frontFacing;
+  out.vertices.push_back(a);
+  out.vertices.push_back(b);
+  out.vertices.push_back(c);
+  if (frontFacing)
+    out.triangles.push_back(ScreenTriangle{{a, c, b}, uint32_t(out.faces.size()), faceId, plane});
+  else
+    out.triangles.push_back(ScreenTriangle{{a, b, c}, uint32_t(out.faces.size()), faceId, plane});
+  out.faces.push_back(face);
+}
+
 void FaceTransformer::appendClippedFace(uint32_t faceId, const Vertex* const* corners, uint32_t n,
                                         uint64_t pieces, FrameGeometry& out) {
   TransformCounters& counters = out.counters;
@@ -165,8 +227,8 @@ void FaceTransformer::appendClippedFace(uint32_t faceId, const Vertex* const* co
   const Vec4* poly = faceClip_.data();
   uint32_t count = n;
   if (any & (kNear | kFar)) {
-    clipped_.resize(n + 2);
-    clipScratch_.resize(n + 2);
+    clipped_.resize(clipNearFarCapacity(n));
+    clipScratch_.resize(clipNearFarCapacity(n));
     count = uint32_t(clipNearFar(poly, n, clipped_.data(), clipScratch_.data()));
     if (count == 0) {
       counters.clippedAway += pieces;
@@ -191,8 +253,8 @@ void FaceTransformer::appendClippedFace(uint32_t faceId, const Vertex* const* co
   for (uint32_t i = 0; i < count; ++i)
     outside |= std::abs(win[i][0]) > guard || std::abs(win[i][1]) > guard;
   if (outside) {
-    guarded_.resize(count + 4);
-    guardScratch_.resize(count + 4);
+    guarded_.resize(clipGuardBandCapacity(count));
+    guardScratch_.resize(clipGuardBandCapacity(count));
     count = uint32_t(clipGuardBand(win, count, guard, guarded_.data(), guardScratch_.data()));
     if (count == 0) {
       counters.clippedAway += pieces;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace zrender {
 
@@ -289,20 +290,27 @@ void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
 
   if (scale == 1 && !perSample_ && mode_ != ShadingMode::Depth) {
     // The common case (one sample per pixel, one color per face): a table look-up per pixel.
+    const uint32_t frame = frame_;
+    const FaceCache* cache = cache_.data();
+    auto colorOf = [&](DepthKey key) {
+      const uint32_t id = keyFaceId(key);
+      if (id == kBackgroundId) return background;
+      const FaceCache& entry = cache[id];
+      return entry.stamp == frame ? entry.data : faceColor(id);
+    };
     for (int y = 0; y < height; ++y) {
       uchar* out = color.ptr<uchar>(y);
       const DepthKey* row = fb.row(y);
-      for (int x = 0; x < width; ++x) {
-        const uint32_t id = keyFaceId(row[x]);
-        uint32_t c = background;
-        if (id != kBackgroundId) {
-          const FaceCache& entry = cache_[id];
-          c = entry.stamp == frame_ ? entry.data : faceColor(id);
-        }
-        out[3 * x + 0] = uchar(c);
-        out[3 * x + 1] = uchar(c >> 8);
-        out[3 * x + 2] = uchar(c >> 16);
+      // One 4-byte store per pixel (B, G, R and a byte the next pixel overwrites), except
+      // the last of the row, where it would spill past the image.
+      for (int x = 0; x + 1 < width; ++x) {
+        const uint32_t c = colorOf(row[x]);
+        std::memcpy(out + 3 * x, &c, 4);
       }
+      const uint32_t c = colorOf(row[width - 1]);
+      out[3 * (width - 1) + 0] = uchar(c);
+      out[3 * (width - 1) + 1] = uchar(c >> 8);
+      out[3 * (width - 1) + 2] = uchar(c >> 16);
     }
     return;
   }

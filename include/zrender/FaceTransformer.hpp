@@ -51,6 +51,7 @@ class FaceTransformer {
   void computeVertex(const Mat4& mvp, const Vec3& position, Vertex& v) const;
   void appendFace(uint32_t faceId, const Vertex* const* corners, uint32_t count,
                   FrameGeometry& out);
+  void appendTriangle(uint32_t faceId, const Vertex* const* corners, FrameGeometry& out);
   void appendClippedFace(uint32_t faceId, const Vertex* const* corners, uint32_t count,
                          uint64_t pieces, FrameGeometry& out);
   void appendSnappedFace(uint32_t faceId, const DepthPlane& plane, uint64_t pieces,

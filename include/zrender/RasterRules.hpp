@@ -113,8 +113,11 @@ struct DepthPlane {
   double a = 0.0, b = 0.0, c = 1.0;
 
   double rowBase(int row) const { return b * (row + 0.5) + c; }
-  float at(int column, double rowBase) const {
-    const float z = static_cast<float>(a * (column + 0.5) + rowBase);
+  float at(int column, double rowBase) const { return atCentre(column + 0.5, rowBase); }
+  // The same with the sample centre's x given (column + 0.5, exact in a double), for loops
+  // that step it by 1.0 instead of converting the column each time.
+  float atCentre(double xCentre, double rowBase) const {
+    const float z = static_cast<float>(a * xCentre + rowBase);
     // Rounding at the edges of a face can step just outside the clip range.
     return std::min(std::max(z, 0.0f), 1.0f);
   }

@@ -7,8 +7,7 @@
 namespace zrender {
 
 // Depth-tests and writes every sample of a set-up triangle: the pixel loop of the z-buffer,
-// shared by the triangle-based algorithms. `rowMin`/`rowMax` (optional, size fb.height())
-// receive the covered column range of each row, for callers that maintain a z-pyramid.
+// shared by the triangle-based algorithms.
 inline void fillTriangle(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId,
                          FrameBuffer& fb, RenderStats& stats) {
   int64_t e0 = s.edge[0].value, e1 = s.edge[1].value, e2 = s.edge[2].value;
@@ -18,22 +17,28 @@ inline void fillTriangle(const TriangleSetup& s, const DepthPlane& plane, uint32
     const double rowBase = plane.rowBase(y);
     DepthKey* row = fb.row(y);
     int64_t r0 = e0, r1 = e1, r2 = e2;
-    bool entered = false;
-    for (int x = s.minX; x <= s.maxX; ++x) {
-      if ((r0 | r1 | r2) >= 0) {
-        entered = true;
-        const DepthKey key = makeDepthKey(plane.at(x, rowBase), faceId);
-        ++tested;
-        if (key < row[x]) {
-          row[x] = key;
-          ++written;
-        }
-      } else if (entered) {
-        break;  // a triangle's samples on a row are contiguous
+    int x = s.minX;
+    // Step to the first covered sample of the row, then test depth until the last one: a
+    // triangle's samples on a row are contiguous.
+    while (x <= s.maxX && (r0 | r1 | r2) < 0) {
+      r0 += x0;
+      r1 += x1;
+      r2 += x2;
+      ++x;
+    }
+    double xCentre = x + 0.5;
+    while (x <= s.maxX && (r0 | r1 | r2) >= 0) {
+      const DepthKey key = makeDepthKey(plane.atCentre(xCentre, rowBase), faceId);
+      ++tested;
+      if (key < row[x]) {
+        row[x] = key;
+        ++written;
       }
       r0 += x0;
       r1 += x1;
       r2 += x2;
+      ++x;
+      xCentre += 1.0;
     }
     e0 += s.edge[0].stepY;
     e1 += s.edge[1].stepY;
