@@ -1,0 +1,36 @@
+#pragma once
+
+#include <vector>
+
+#include "zrender/PolygonEdges.hpp"
+#include "zrender/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+
+// The scan-line z-buffer (SPEC §1 `scanline`): polygons are drawn natively, row by row from the
+// top, from a classified polygon table and a classified edge table bucketed by top row. The
+// active polygon table holds the polygons that cross the current row; each keeps its own active
+// edges sorted by column and fills its spans pairwise (even-odd) into a one-row depth buffer,
+// which is then copied to the frame buffer.
+class ScanlineAlgorithm : public VisibilityAlgorithm {
+ public:
+  std::string name() const override { return "scanline"; }
+  void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
+
+ private:
+  // An edge in its polygon's active edge list.
+  struct ActiveEdge {
+    EdgeStepper step;
+    int32_t lastRow;  // the edge leaves the list after this row
+  };
+
+  PolygonTables tables_;
+  std::vector<uint32_t> activePolygons_;  // indices into tables_.polygons
+  // Active edges of polygon p live in activeEdges_[p.edgeBegin, p.edgeBegin + activeCount_[p]):
+  // a polygon never has more active edges than edges, so the slots never overflow.
+  std::vector<ActiveEdge> activeEdges_;
+  std::vector<uint32_t> activeCount_;
+  std::vector<DepthKey> rowKeys_;  // the one-row depth buffer
+};
+
+}  // namespace zrender

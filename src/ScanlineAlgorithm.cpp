@@ -1,0 +1,102 @@
+#include "zrender/ScanlineAlgorithm.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+namespace zrender {
+
+void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+  const int width = fb.width(), height = fb.height();
+  tables_.build(input.geometry, width, height);
+  stats.trianglesRasterized += tables_.triangleCount;
+  activeEdges_.resize(tables_.edges.size());
+  activeCount_.assign(tables_.polygons.size(), 0);
+  activePolygons_.clear();
+  rowKeys_.assign(size_t(std::max(width, 0)), kClearKey);
+
+  uint64_t tested = 0, written = 0, spans = 0;
+  size_t activeEdgeTotal = 0, maxActiveEdges = 0, maxActivePolygons = 0;
+  for (int y = 0; y < height; ++y) {
+    // Polygons and edges whose top row is y join the active tables.
+    for (uint32_t k = tables_.polygonBucket[y]; k < tables_.polygonBucket[y + 1]; ++k)
+      activePolygons_.push_back(k);
+    for (uint32_t k = tables_.edgeBucket[y]; k < tables_.edgeBucket[y + 1]; ++k) {
+      const ClassifiedEdge& e = tables_.edges[k];
+      ActiveEdge& a =
+          activeEdges_[tables_.polygons[e.polygon].edgeBegin + activeCount_[e.polygon]++];
+      a.step.start(e.top, e.bottom, y);
+      a.lastRow = e.lastRow;
+      ++activeEdgeTotal;
+    }
+    maxActiveEdges = std::max(maxActiveEdges, activeEdgeTotal);
+    maxActivePolygons = std::max(maxActivePolygons, activePolygons_.size());
+
+    DepthKey* row = rowKeys_.data();
+    int dirtyLeft = width, dirtyRight = 0;  // columns of the row buffer written on this row
+    size_t keep = 0;
+    for (size_t i = 0; i < activePolygons_.size(); ++i) {
+      const uint32_t pi = activePolygons_[i];
+      const ClassifiedPolygon& p = tables_.polygons[pi];
+      ActiveEdge* list = activeEdges_.data() + p.edgeBegin;
+      const uint32_t n = activeCount_[pi];
+      // Insertion sort by column: the order changes little from row to row.
+      for (uint32_t k = 1; k < n; ++k) {
+        const ActiveEdge e = list[k];
+        uint32_t j = k;
+        for (; j > 0 && list[j - 1].step.column > e.step.column; --j) list[j] = list[j - 1];
+        list[j] = e;
+      }
+      // Even-odd spans [q1, q2), [q3, q4), ... clipped to the image.
+      const double rowBase = p.plane.rowBase(y);
+      for (uint32_t k = 0; k + 1 < n; k += 2) {
+        const int left = std::max(list[k].step.column, 0);
+        const int right = std::min(list[k + 1].step.column, width);
+        if (left >= right) continue;
+        ++spans;
+        tested += uint64_t(right - left);
+        dirtyLeft = std::min(dirtyLeft, left);
+        dirtyRight = std::max(dirtyRight, right);
+        for (int x = left; x < right; ++x) {
+          const DepthKey key = makeDepthKey(p.plane.at(x, rowBase), p.id);
+          if (key < row[x]) {
+            row[x] = key;
+            ++written;
+          }
+        }
+      }
+      // Edges ending on this row leave; the others step to the next row.
+      uint32_t m = 0;
+      for (uint32_t k = 0; k < n; ++k) {
+        if (list[k].lastRow == y) continue;
+        if (m != k) list[m] = list[k];
+        list[m].step.step();
+        ++m;
+      }
+      activeEdgeTotal -= n - m;
+      activeCount_[pi] = m;
+      if (p.bottomRow != y) activePolygons_[keep++] = pi;
+    }
+    activePolygons_.resize(keep);
+    // Copy the row buffer to the frame buffer (clear outside the written range), and make the
+    // row buffer clear again for the next row.
+    DepthKey* out = fb.row(y);
+    if (dirtyLeft < dirtyRight) {
+      std::fill(out, out + dirtyLeft, kClearKey);
+      std::memcpy(out + dirtyLeft, row + dirtyLeft,
+                  sizeof(DepthKey) * size_t(dirtyRight - dirtyLeft));
+      std::fill(out + dirtyRight, out + width, kClearKey);
+      std::fill(row + dirtyLeft, row + dirtyRight, kClearKey);
+    } else {
+      std::fill(out, out + width, kClearKey);
+    }
+  }
+
+  // pixelsWritten counts one-row buffer writes; a sample can be overwritten by nearer faces.
+  stats.pixelsTested += tested;
+  stats.pixelsWritten += written;
+  stats.extra.emplace_back("spans", spans);
+  stats.extra.emplace_back("max_active_edges", maxActiveEdges);
+  stats.extra.emplace_back("max_active_polygons", maxActivePolygons);
+}
+
+}  // namespace zrender
