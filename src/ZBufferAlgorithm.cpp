@@ -35,10 +35,11 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     if (visible) ++bandStart_[band_[i] + 1];
   }
   for (int b = 0; b < bandCount; ++b) bandStart_[size_t(b) + 1] += bandStart_[size_t(b)];
-  order_.resize(bandStart_[size_t(bandCount)]);
+  // Copied into band order, so the fill loop below reads them sequentially.
+  sorted_.resize(bandStart_[size_t(bandCount)]);
   cursor_.assign(bandStart_.begin(), bandStart_.end() - 1);
   for (size_t i = 0; i < g.triangles.size(); ++i)
-    if (band_[i] < uint32_t(bandCount)) order_[cursor_[band_[i]]++] = uint32_t(i);
+    if (band_[i] < uint32_t(bandCount)) sorted_[cursor_[band_[i]]++] = g.triangles[i];
 
   // Rows are cleared just before the first triangle that reaches them, while they are about
   // to be used, instead of in a separate pass over the whole buffer.
@@ -49,8 +50,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     clearedRows = lastRow + 1;
   };
   TriangleSetup setup;
-  for (const uint32_t i : order_) {
-    const ScreenTriangle& t = g.triangles[i];
+  for (const ScreenTriangle& t : sorted_) {
     if (!setup.setup(t.v, width, height)) continue;
     clearRowsUpTo(setup.maxY);
     ++stats.trianglesRasterized;

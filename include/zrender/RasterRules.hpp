@@ -105,6 +105,17 @@ struct TriangleSetup {
   }
 };
 
+inline uint32_t floatBits(float f) {
+  uint32_t u;
+  std::memcpy(&u, &f, sizeof u);
+  return u;
+}
+inline float bitsToFloat(uint32_t u) {
+  float f;
+  std::memcpy(&f, &u, sizeof f);
+  return f;
+}
+
 // Window depth of a planar face as an affine function of the sample position:
 // z = a * x + b * y + c with x, y in samples (centre of sample i at i + 0.5), z in 0..1.
 // Every algorithm evaluates it through rowBase() and at() so the float result is the same bits
@@ -117,10 +128,13 @@ struct DepthPlane {
   // The same with the sample centre's x given (column + 0.5, exact in a double), for loops
   // that step it by 1.0 instead of converting the column each time.
   float atCentre(double xCentre, double rowBase) const {
-    const float z = static_cast<float>(a * xCentre + rowBase);
-    // Rounding at the edges of a face can step just outside the clip range.
-    return std::min(std::max(z, 0.0f), 1.0f);
+    // Rounding at the edges of a face can step just outside the clip range: clamp to [0, 1].
+    // On the bits, as integers: branch-free, and -0.0 (or a NaN) cannot slip through as a
+    // negative float whose key would sort above the background.
+    const int32_t bits = static_cast<int32_t>(floatBits(static_cast<float>(a * xCentre + rowBase)));
+    return bitsToFloat(static_cast<uint32_t>(std::min(std::max(bits, 0), kOneBits)));
   }
+  static constexpr int32_t kOneBits = 0x3F800000;  // the bits of 1.0f
 };
 
 // A sample's visibility as one ordered 64-bit key: the float depth's bits (monotonic for
@@ -129,16 +143,6 @@ struct DepthPlane {
 using DepthKey = uint64_t;
 constexpr uint32_t kBackgroundId = 0xFFFFFFFFu;
 
-inline uint32_t floatBits(float f) {
-  uint32_t u;
-  std::memcpy(&u, &f, sizeof u);
-  return u;
-}
-inline float bitsToFloat(uint32_t u) {
-  float f;
-  std::memcpy(&f, &u, sizeof f);
-  return f;
-}
 inline DepthKey makeDepthKey(float depth, uint32_t faceId) {
   return (DepthKey(floatBits(depth)) << 32) | faceId;
 }

@@ -15,7 +15,8 @@ class ZBufferAlgorithm : public VisibilityAlgorithm {
 
  private:
   // Scratch reused from frame to frame: each triangle's band, the triangles sorted by band.
-  std::vector<uint32_t> band_, bandStart_, cursor_, order_;
+  std::vector<uint32_t> band_, bandStart_, cursor_;
+  std::vector<ScreenTriangle> sorted_;
 };
 
 }  // namespace zrender
