@@ -1,0 +1,118 @@
+#include "zrender/DepthPyramid.hpp"
+
+#include <algorithm>
+
+namespace zrender {
+
+void DepthPyramid::begin(FrameBuffer& fb) {
+  fb_ = &fb;
+  if (fb.width() != width_ || fb.height() != height_ || levels_.empty()) {
+    width_ = fb.width();
+    height_ = fb.height();
+    tilesX_ = (width_ + kTileSize - 1) >> kTileShift;
+    tilesY_ = (height_ + kTileSize - 1) >> kTileShift;
+    levels_.clear();
+    levelWidth_.clear();
+    levelHeight_.clear();
+    int w = std::max(tilesX_, 1), h = std::max(tilesY_, 1);
+    for (;;) {
+      levels_.emplace_back(size_t(w) * size_t(h));
+      levelWidth_.push_back(w);
+      levelHeight_.push_back(h);
+      if (w == 1 && h == 1) break;
+      w = (w + 1) / 2;
+      h = (h + 1) / 2;
+    }
+    const size_t tiles = size_t(tilesX_) * size_t(tilesY_);
+    tileArgMax_.resize(tiles);
+    rowCleared_.resize(size_t(tilesY_));
+  }
+  for (auto& level : levels_) std::fill(level.begin(), level.end(), kClearKey);
+  std::fill(rowCleared_.begin(), rowCleared_.end(), uint8_t(0));
+}
+
+void DepthPyramid::clearTileRow(int ty) {
+  const int y0 = ty << kTileShift, y1 = std::min(y0 + kTileSize, height_);
+  for (int y = y0; y < y1; ++y) std::fill(fb_->row(y), fb_->row(y) + width_, kClearKey);
+  // Any sample holds the maximum of a clear tile; the last one is reached last by triangles
+  // drawn top to bottom, which postpones the first rescan.
+  uint32_t* argMax = tileArgMax_.data() + size_t(ty) * tilesX_;
+  for (int tx = 0; tx < tilesX_; ++tx) {
+    const int lastX = std::min((tx + 1) << kTileShift, width_) - 1;
+    argMax[tx] = uint32_t(size_t(y1 - 1) * size_t(width_) + size_t(lastX));
+  }
+  rowCleared_[size_t(ty)] = 1;
+}
+
+void DepthPyramid::rescanTile(int tx, int ty) {
+  const int x0 = tx << kTileShift, y0 = ty << kTileShift;
+  const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
+  const size_t t = size_t(ty) * tilesX_ + tx;
+  // The maximum of each row (branch-free; a constant trip count for whole tiles), the last row
+  // holding the overall maximum, then the last sample of that row holding it: for a tile with
+  // samples still clear, the bottom-right-most of them, which triangles drawn top to bottom
+  // reach last.
+  DepthKey best = 0;
+  int bestRow = y0;
+  for (int y = y0; y < y1; ++y) {
+    const DepthKey* row = fb_->row(y) + x0;
+    DepthKey m = row[0];
+    if (x1 - x0 == kTileSize) {
+      for (int i = 1; i < kTileSize; ++i) m = std::max(m, row[i]);  // a constant trip count
+    } else {
+      for (int i = 1; i < x1 - x0; ++i) m = std::max(m, row[i]);
+    }
+    bestRow = m >= best ? y : bestRow;
+    best = std::max(best, m);
+  }
+  const DepthKey* row = fb_->row(bestRow);
+  int bestX = x1 - 1;
+  while (bestX > x0 && row[bestX] != best) --bestX;
+  tileArgMax_[t] = uint32_t(size_t(bestRow) * size_t(width_) + size_t(bestX));
+  if (best == levels_[0][t]) return;
+  levels_[0][t] = best;
+  propagate(tx, ty);
+}
+
+void DepthPyramid::propagate(int tx, int ty) {
+  // Recompute parents from their (up to four) children while the maximum keeps changing.
+  int x = tx, y = ty;
+  for (size_t level = 1; level < levels_.size(); ++level) {
+    x >>= 1;
+    y >>= 1;
+    const std::vector<DepthKey>& child = levels_[level - 1];
+    const int cw = levelWidth_[level - 1], ch = levelHeight_[level - 1];
+    const int cx0 = 2 * x, cy0 = 2 * y;
+    const int cx1 = std::min(cx0 + 1, cw - 1), cy1 = std::min(cy0 + 1, ch - 1);
+    DepthKey m = child[size_t(cy0) * cw + cx0];
+    m = std::max(m, child[size_t(cy0) * cw + cx1]);
+    m = std::max(m, child[size_t(cy1) * cw + cx0]);
+    m = std::max(m, child[size_t(cy1) * cw + cx1]);
+    DepthKey& node = levels_[level][size_t(y) * levelWidth_[level] + x];
+    if (node == m) return;
+    node = m;
+  }
+}
+
+bool DepthPyramid::occludesSlow(int x0, int y0, int x1, int y1, DepthKey key, int maxNodes) const {
+  // Coarsest useful level: the tile rectangle meets at most 2 x 2 of its nodes.
+  const int top = int(levels_.size()) - 1;
+  int level = std::min(1, top);
+  while (level < top && ((x1 >> level) - (x0 >> level) > 1 || (y1 >> level) - (y0 >> level) > 1))
+    ++level;
+  // Then finer levels, whose nodes hug the rectangle better, while they stay cheap.
+  for (;;) {
+    if (key > maxOver(level, x0 >> level, y0 >> level, x1 >> level, y1 >> level)) return true;
+    if (level == 0) return false;
+    --level;
+    const int nx = (x1 >> level) - (x0 >> level) + 1, ny = (y1 >> level) - (y0 >> level) + 1;
+    if (nx * ny > maxNodes) return false;
+  }
+}
+
+void DepthPyramid::finish() {
+  for (int ty = 0; ty < tilesY_; ++ty)
+    if (!rowCleared_[size_t(ty)]) clearTileRow(ty);
+}
+
+}  // namespace zrender

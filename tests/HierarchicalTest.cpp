@@ -1,0 +1,546 @@
+// `hierarchical` and `octree` against the z-buffer: bit-identical keys (depth + id) and colors
+// on reference models, quads, concave polygons, random soups, off-screen and near-plane
+// geometry, the crowd scene, every shading mode, culling off and MSAA 4. Plus the pieces on
+// their own: the nearest-key bound, the pyramid's rejection and tie-break, the octree's
+// structure and its counters.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "TestSupport.hpp"
+#include "zrender/DepthPyramid.hpp"
+#include "zrender/FaceTransformer.hpp"
+#include "zrender/HierarchicalAlgorithm.hpp"
+#include "zrender/Octree.hpp"
+#include "zrender/OctreeAlgorithm.hpp"
+#include "zrender/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+namespace {
+
+const std::vector<std::string> kAlgorithms = {"hierarchical", "octree"};
+
+size_t coveredSamples(const FrameBuffer& fb) {
+  size_t n = 0;
+  for (size_t i = 0; i < fb.size(); ++i) n += fb.data()[i] != kClearKey;
+  return n;
+}
+
+struct Compared {
+  size_t covered = 0;              // samples zbuffer covered
+  std::vector<RenderStats> stats;  // per entry of kAlgorithms
+};
+
+// Renders `scene` with zbuffer and both pyramid algorithms; keys and colors must be equal.
+Compared expectSameAsZBuffer(const Scene& scene, const std::string& what) {
+  Compared out;
+  const test::Rendered ref = test::render(scene, "zbuffer");
+  out.covered = coveredSamples(ref.buffer);
+  for (const std::string& alg : kAlgorithms) {
+    const test::Rendered r = test::render(scene, alg);
+    EXPECT_EQ(test::countDifferences(ref.buffer, r.buffer), 0u) << alg << " keys, " << what;
+    EXPECT_EQ(ref.color.size(), r.color.size()) << alg << ", " << what;
+    EXPECT_EQ(ref.color.type(), r.color.type()) << alg << ", " << what;
+    if (ref.color.size() == r.color.size() && ref.color.type() == r.color.type()) {
+      cv::Mat diff;
+      cv::absdiff(ref.color, r.color, diff);
+      EXPECT_EQ(cv::countNonZero(diff.reshape(1)), 0) << alg << " color, " << what;
+    }
+    out.stats.push_back(r.stats);
+  }
+  return out;
+}
+
+Compared expectSameAsZBuffer(std::shared_ptr<const Mesh> mesh, const SceneSettings& settings,
+                             const std::string& what) {
+  Warnings warnings;
+  const Scene scene = makeScene(settings, std::move(mesh), warnings);
+  return expectSameAsZBuffer(scene, what);
+}
+
+// A reference scene of settings.json at a reduced size, or null (and the test skipped).
+std::shared_ptr<const Mesh> referenceScene(const std::string& name, int size,
+                                           SceneSettings& settings) {
+  auto mesh = test::referenceModel(name);
+  if (!mesh) return nullptr;
+  settings = test::projectScene(name);
+  settings.width = settings.height = size;
+  return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The pieces.
+
+TEST(NearestKeyTest, IsABoundOfEverySampleKeyInTheRectangle) {
+  // Random planes, including steep and nearly flat ones and ones that leave [0, 1], over
+  // random rectangles: the bound never exceeds a sample's key, and is not far below it.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int tight = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    DepthPlane p;
+    const double scale = std::pow(10.0, -7.0 + 8.0 * unit(rng));
+    p.a = (unit(rng) - 0.5) * scale;
+    p.b = (unit(rng) - 0.5) * scale;
+    p.c = unit(rng) * 1.2 - 0.1;
+    const int x0 = int(unit(rng) * 1000), y0 = int(unit(rng) * 1000);
+    const int x1 = x0 + int(unit(rng) * 40), y1 = y0 + int(unit(rng) * 40);
+    const uint32_t id = uint32_t(unit(rng) * 1e6);
+    const DepthKey bound = nearestKeyOver(p, id, x0, y0, x1, y1);
+    DepthKey smallest = ~DepthKey(0);
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x)
+        smallest = std::min(smallest, makeDepthKey(p.at(x, p.rowBase(y)), id));
+    ASSERT_LE(bound, smallest) << "trial " << trial;
+    tight += keyDepth(smallest) - keyDepth(bound) < 1e-6f;
+  }
+  EXPECT_GT(tight, 2900);  // the margin is a few ulps, not a loose bound
+}
+
+TEST(NearestKeyTest, NanPlaneIsNeverOccluded) {
+  DepthPlane p;
+  p.a = std::nan("");
+  EXPECT_EQ(nearestKeyOver(p, 5, 0, 0, 3, 3), 0u);
+}
+
+// Draws one triangle (sample coordinates, positively oriented) through an HzbRasterizer.
+ScreenTriangle makeTriangle(double x0, double y0, double x1, double y1, double x2, double y2,
+                            uint32_t id, double depth) {
+  ScreenTriangle t{};
+  t.v[0] = FixedPoint{snapToSubpixel(x0), snapToSubpixel(y0)};
+  t.v[1] = FixedPoint{snapToSubpixel(x1), snapToSubpixel(y1)};
+  t.v[2] = FixedPoint{snapToSubpixel(x2), snapToSubpixel(y2)};
+  t.id = id;
+  t.plane.a = 0.0;
+  t.plane.b = 0.0;
+  t.plane.c = depth;
+  return t;
+}
+
+TEST(HzbRasterizerTest, RejectsWhatIsBehindAndKeepsTies) {
+  FrameBuffer fb;
+  fb.resize(64, 48);
+  {
+    HzbRasterizer r;
+    r.begin(fb);
+    RenderStats stats;
+    // A big occluder at depth 0.5 with id 7: the two triangles of the whole image.
+    r.drawTriangle(makeTriangle(0, 0, 64, 0, 64, 48, 7, 0.5), stats);
+    r.drawTriangle(makeTriangle(0, 0, 64, 48, 0, 48, 7, 0.5), stats);
+    EXPECT_EQ(stats.trianglesRasterized, 2u);
+    // Behind: rejected without pixel work.
+    const uint64_t tested = stats.pixelsTested;
+    r.drawTriangle(makeTriangle(5, 5, 30, 5, 30, 30, 3, 0.75), stats);
+    EXPECT_EQ(stats.trianglesHzbCulled, 1u);
+    EXPECT_EQ(stats.pixelsTested, tested);
+    // Same depth, larger id: loses every tie (rejecting it is allowed, drawing it harmless).
+    r.drawTriangle(makeTriangle(5, 5, 30, 5, 30, 30, 9, 0.5), stats);
+    const uint64_t culled = stats.trianglesHzbCulled;
+    // Same depth, smaller id: wins every tie, so it must be drawn.
+    r.drawTriangle(makeTriangle(5, 5, 30, 5, 30, 30, 2, 0.5), stats);
+    EXPECT_EQ(stats.trianglesHzbCulled, culled);
+    // In front: drawn.
+    r.drawTriangle(makeTriangle(40, 10, 60, 10, 60, 40, 11, 0.25), stats);
+    EXPECT_EQ(stats.trianglesHzbCulled, culled);
+    r.finish();
+    EXPECT_EQ(keyFaceId(fb.row(6)[28]), 2u);
+    EXPECT_EQ(keyFaceId(fb.row(30)[55]), 11u);
+    EXPECT_EQ(keyFaceId(fb.row(40)[10]), 7u);
+    // The farthest key left is (0.5, 7): a key at that depth with a larger id is hidden
+    // everywhere, one with a smaller id nowhere.
+    EXPECT_TRUE(r.pyramid().occludes(0, 0, 63, 47, makeDepthKey(0.5f, 8)));
+    EXPECT_FALSE(r.pyramid().occludes(0, 0, 63, 47, makeDepthKey(0.5f, 6)));
+    EXPECT_FALSE(r.pyramid().occludes(0, 0, 63, 47, makeDepthKey(0.4f, 99)));
+    EXPECT_TRUE(r.pyramid().occludes(0, 0, 63, 47, makeDepthKey(0.6f, 0)));
+  }
+}
+
+TEST(DepthPyramidTest, NodesBoundTheBufferAfterRandomWrites) {
+  // Random triangles at random depths on buffers of awkward sizes (partial tiles, a single
+  // tile, one row of tiles), then pyramid queries over random rectangles against a
+  // brute-force maximum of the buffer: never occluded when key <= that maximum. The buffer
+  // must also end fully written (cleared where nothing was drawn).
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int rejected = 0;
+  uint64_t culled = 0;
+  for (const auto& size :
+       std::vector<std::pair<int, int>>{{100, 70}, {1, 1}, {5, 3}, {9, 17}, {64, 8}, {33, 130}}) {
+    const int w = size.first, h = size.second;
+    SCOPED_TRACE(std::to_string(w) + " x " + std::to_string(h));
+    FrameBuffer fb;
+    fb.resize(w, h);
+    std::fill(fb.data(), fb.data() + fb.size(), DepthKey(12345));  // last frame's garbage
+    HzbRasterizer r;
+    r.begin(fb);
+    RenderStats stats;
+    for (uint32_t i = 0; i < 300; ++i) {
+      double p[6];
+      for (int k = 0; k < 6; k += 2) p[k] = unit(rng) * w, p[k + 1] = unit(rng) * h;
+      ScreenTriangle t = makeTriangle(p[0], p[1], p[2], p[3], p[4], p[5], i, unit(rng));
+      if (orient2d(t.v[0], t.v[1], t.v[2]) < 0) std::swap(t.v[1], t.v[2]);
+      t.plane.a = (unit(rng) - 0.5) * 0.01;
+      if (orient2d(t.v[0], t.v[1], t.v[2]) > 0) r.drawTriangle(t, stats);
+    }
+    for (int q = 0; q < 500; ++q) {
+      int x0 = int(unit(rng) * w), x1 = int(unit(rng) * w);
+      int y0 = int(unit(rng) * h), y1 = int(unit(rng) * h);
+      if (x0 > x1) std::swap(x0, x1);
+      if (y0 > y1) std::swap(y0, y1);
+      DepthKey m = 0;
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) m = std::max(m, fb.row(y)[x]);
+      const DepthKey key = makeDepthKey(float(unit(rng)), 0);
+      const bool occluded = r.pyramid().occludes(x0, y0, x1, y1, key, 64);
+      if (key <= m) {
+        ASSERT_FALSE(occluded) << q;
+      }
+      rejected += occluded;
+    }
+    r.finish();
+    for (size_t i = 0; i < fb.size(); ++i) ASSERT_NE(fb.data()[i], DepthKey(12345)) << i;
+    culled += stats.trianglesHzbCulled;
+  }
+  EXPECT_GT(culled, 0u);
+  EXPECT_GT(rejected, 0);
+}
+
+TEST(OctreeTest, EveryFaceOnceAndInsideItsNodes) {
+  // Three instances of a random soup, rotated: every face id appears once, every node's box
+  // holds its faces' corners, and children split their parent's face range.
+  SceneSettings s = test::tinySettings(64);
+  s.angle = 30.0;
+  s.axis = Vec3(1, 2, 3);
+  s.grid = Grid{{3, 1, 1}, Vec3(2.5, 0, 0)};
+  Warnings warnings;
+  const Scene scene = makeScene(s, test::randomSoup(11, 700, false), warnings);
+  Octree tree;
+  tree.build(scene);
+  ASSERT_FALSE(tree.empty());
+  std::vector<uint32_t> ids = tree.faces();
+  std::sort(ids.begin(), ids.end());
+  ASSERT_EQ(ids.size(), size_t(scene.faceCount()));
+  for (uint32_t i = 0; i < ids.size(); ++i) ASSERT_EQ(ids[i], i);
+
+  const Mesh& mesh = *scene.mesh;
+  const uint32_t nf = uint32_t(mesh.faceCount());
+  size_t leaves = 0;
+  for (const OctreeNode& node : tree.nodes()) {
+    for (uint32_t i = node.faceBegin; i < node.faceEnd; ++i) {
+      const uint32_t id = tree.faces()[i];
+      const Mat4 m = scene.modelMatrix(id / nf);
+      const Corner* c = mesh.faceCorners(id % nf);
+      for (uint32_t j = 0; j < mesh.cornerCount(id % nf); ++j) {
+        const Vec3 p = transformPoint(m, mesh.positions[size_t(c[j].position)]);
+        for (int a = 0; a < 3; ++a) {
+          ASSERT_LE(node.lo[a], p[a]);
+          ASSERT_GE(node.hi[a], p[a]);
+        }
+      }
+    }
+    if (node.childMask == 0) {
+      ++leaves;
+      continue;
+    }
+    uint32_t next = node.faceBegin;
+    const int children = __builtin_popcount(node.childMask);
+    for (int k = 0; k < children; ++k) {
+      const OctreeNode& child = tree.nodes()[node.firstChild + uint32_t(k)];
+      EXPECT_EQ(child.faceBegin, next);
+      EXPECT_LT(child.faceBegin, child.faceEnd);
+      next = child.faceEnd;
+    }
+    EXPECT_EQ(next, node.faceEnd);
+  }
+  EXPECT_GT(leaves, 8u);
+}
+
+TEST(OctreeTest, HiddenNodesHoldNoVisibleFace) {
+  // A wall (faces 0, 1) with clusters of small triangles just in front of and just behind it,
+  // and more far behind. Against a pyramid of the wall alone, every node the test calls
+  // hidden must hold only faces that the z-buffer of the whole scene does not show.
+  std::mt19937 rng(21);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p = {{-2.2, -2.2, 0.0}, {2.2, -2.2, 0.0}, {2.2, 2.2, 0.0}, {-2.2, 2.2, 0.0}};
+  std::vector<std::vector<int>> f = {{0, 1, 2}, {0, 2, 3}};
+  for (int cluster = 0; cluster < 300; ++cluster) {
+    const bool far = cluster % 2 == 1;
+    const Vec3 c(1.8 * u(rng), 1.8 * u(rng), far ? -4.0 + u(rng) : 0.05 * u(rng));
+    for (int i = 0; i < 20; ++i) {
+      const int b = int(p.size());
+      for (int k = 0; k < 3; ++k) p.push_back(c + Vec3(0.1 * u(rng), 0.1 * u(rng), 0.01 * u(rng)));
+      f.push_back({b, b + 1, b + 2});
+    }
+  }
+  SceneSettings s = test::tinySettings(512);
+  s.cull = false;
+  Warnings warnings;
+  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const test::Rendered ref = test::render(scene, "zbuffer");
+  std::vector<bool> shown(scene.faceCount(), false);
+  for (size_t i = 0; i < ref.buffer.size(); ++i)
+    if (keyFaceId(ref.buffer.data()[i]) != kBackgroundId)
+      shown[keyFaceId(ref.buffer.data()[i])] = true;
+
+  const Camera camera = makeCamera(scene);
+  FaceTransformer transformer(scene, camera, 1, false);
+  FrameGeometry wall;
+  transformer.transformFace(0, wall);
+  transformer.transformFace(1, wall);
+  FrameBuffer fb;
+  fb.resize(wall.width, wall.height);
+  HzbRasterizer r;
+  r.begin(fb);
+  RenderStats stats;
+  for (const ScreenTriangle& t : wall.triangles) r.drawTriangle(t, stats);
+
+  Octree tree;
+  tree.build(scene);
+  const OctreeNodeTest test(camera, fb.width(), fb.height(), 1);
+  int hiddenNodes = 0, hiddenFaces = 0;
+  for (const OctreeNode& node : tree.nodes()) {
+    if (!test.hidden(node, r.pyramid())) continue;
+    ++hiddenNodes;
+    for (uint32_t i = node.faceBegin; i < node.faceEnd; ++i) {
+      ASSERT_FALSE(shown[tree.faces()[i]]) << "face " << tree.faces()[i] << " is visible";
+      ++hiddenFaces;
+    }
+  }
+  EXPECT_GT(hiddenNodes, 0);
+  EXPECT_GT(hiddenFaces, 1000);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Whole frames against the z-buffer.
+
+TEST(HierarchicalExactTest, ReferenceModels) {
+  for (const std::string name : {"bunny", "spot", "teapot"}) {
+    SceneSettings s;
+    auto mesh = referenceScene(name, 360, s);
+    if (!mesh) GTEST_SKIP() << name << " not linked under models/";
+    const Compared c = expectSameAsZBuffer(mesh, s, name);
+    EXPECT_GT(c.covered, 1000u) << name;
+  }
+}
+
+TEST(HierarchicalExactTest, BunnyMsaaAndNoCull) {
+  SceneSettings s;
+  auto mesh = referenceScene("bunny", 240, s);
+  if (!mesh) GTEST_SKIP() << "bunny not linked under models/";
+  s.msaa = 4;
+  expectSameAsZBuffer(mesh, s, "msaa 4");
+  s.cull = false;
+  expectSameAsZBuffer(mesh, s, "msaa 4, no cull");
+  s.msaa = 1;
+  expectSameAsZBuffer(mesh, s, "no cull");
+}
+
+TEST(HierarchicalExactTest, EveryShadingMode) {
+  SceneSettings s;
+  auto mesh = referenceScene("spot", 200, s);
+  if (!mesh) GTEST_SKIP() << "spot not linked under models/";
+  for (const std::string& mode : shadingModeNames()) {
+    s.shading = *parseShadingMode(mode);
+    expectSameAsZBuffer(mesh, s, "shading " + mode);
+  }
+}
+
+TEST(HierarchicalExactTest, QuadsAndConcavePolygon) {
+  // Overlapping quads at different depths and tilts, and a concave (arrow-shaped) polygon that
+  // pierces them.
+  std::vector<Vec3> p = {{-1.5, -1.5, -0.5}, {1.0, -1.5, -0.3}, {1.0, 1.0, -0.1}, {-1.5, 1.0, -0.3},
+                         {-0.5, -0.5, 0.2},  {1.8, -0.5, -0.6}, {1.8, 1.8, -0.6}, {-0.5, 1.8, 0.2},
+                         {-1.8, -1.0, 0.0},  {0.0, -1.6, 0.0},  {1.6, -1.0, 0.0}, {0.5, -0.8, -0.9},
+                         {1.4, 0.8, 0.0},    {0.0, 0.1, 0.9},   {-1.4, 0.8, -0.4}};
+  std::vector<std::vector<int>> f = {{0, 1, 2, 3}, {4, 5, 6, 7}, {8, 9, 10, 11, 12, 13, 14}};
+  for (bool cull : {true, false}) {
+    SceneSettings s = test::tinySettings(97);
+    s.cull = cull;
+    const Compared c = expectSameAsZBuffer(test::makeMesh(p, f), s, "quads");
+    EXPECT_GT(c.covered, 2000u);
+  }
+}
+
+TEST(HierarchicalExactTest, RandomSoupsWithCoplanarDuplicates) {
+  for (unsigned seed : {1u, 2u, 3u, 4u, 5u}) {
+    SceneSettings s = test::tinySettings(80 + int(seed) * 7);
+    s.cull = false;
+    s.msaa = seed % 2 ? 1 : 4;
+    const Compared c =
+        expectSameAsZBuffer(test::randomSoup(seed, 400, true), s, "soup " + std::to_string(seed));
+    EXPECT_GT(c.covered, 1000u);
+  }
+}
+
+TEST(HierarchicalExactTest, NearPlaneAndOffScreen) {
+  // A tilted floor that runs from far away to behind the eye and past the image's sides, with
+  // posts standing on it; and the bunny seen from inside itself.
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  const int n = 24;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      p.emplace_back(-6.0 + 12.0 * i / n, -0.6 + 0.05 * j, -6.0 + 10.0 * j / n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      f.push_back({a, a + 1, a + n + 2, a + n + 1});
+    }
+  for (int k = 0; k < 6; ++k) {
+    const int b = int(p.size());
+    const double x = -2.5 + k, z = -3.0 + 0.8 * k;
+    p.insert(p.end(), {{x, -0.7, z}, {x + 0.4, -0.7, z}, {x + 0.4, 1.5, z}, {x, 1.5, z}});
+    f.push_back({b, b + 1, b + 2, b + 3});
+  }
+  for (bool cull : {true, false}) {
+    SceneSettings s = test::tinySettings(90);
+    s.cull = cull;
+    s.eye = Vec3(0.3, 0.2, 1.0);
+    const Compared c = expectSameAsZBuffer(test::makeMesh(p, f), s, "floor");
+    EXPECT_GT(c.covered, 1000u);
+  }
+
+  SceneSettings s;
+  auto mesh = referenceScene("bunny", 200, s);
+  if (!mesh) GTEST_SKIP() << "bunny not linked under models/";
+  s.eye = Vec3(-0.02, 0.11, 0.02);
+  s.target = Vec3(0.1, 0.12, -0.1);
+  s.fovy = 80.0;
+  s.near = 0.005;
+  s.cull = false;
+  const Compared c = expectSameAsZBuffer(mesh, s, "inside the bunny");
+  EXPECT_GT(c.covered, 1000u);
+}
+
+TEST(HierarchicalExactTest, BigOccluderIsRejectedByThePyramid) {
+  // A near quad (faces 0, 1: first in id order) hides a far grid of small quads.
+  std::vector<Vec3> p = {{-1.9, -1.9, 0.5}, {1.9, -1.9, 0.5}, {1.9, 1.9, 0.5}, {-1.9, 1.9, 0.5}};
+  std::vector<std::vector<int>> f = {{0, 1, 2}, {0, 2, 3}};
+  const int n = 20;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(-1.5 + 3.0 * i / n, -1.5 + 3.0 * j / n, -1.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = 4 + j * (n + 1) + i;
+      f.push_back({a, a + 1, a + n + 2, a + n + 1});
+    }
+  SceneSettings s = test::tinySettings(128);
+  const Compared c = expectSameAsZBuffer(test::makeMesh(p, f), s, "occluder");
+  for (size_t k = 0; k < kAlgorithms.size(); ++k) {
+    SCOPED_TRACE(kAlgorithms[k]);
+    EXPECT_GT(c.stats[k].trianglesHzbCulled + c.stats[k].octreeNodesCulled, 0u);
+  }
+  EXPECT_GE(c.stats[0].trianglesHzbCulled, 2u * n * n - 40u);  // hierarchical: nearly all
+}
+
+TEST(HierarchicalExactTest, SliversBehindAnOccluder) {
+  // Thousands of thin, randomly tilted slivers (some nearly edge-on, whose depth planes are
+  // extrapolated steeply at snapped samples) behind a quad that hides them, from just behind
+  // it to far enough that the octree rejects their nodes: neither the pyramid's bounds nor
+  // the octree's node margin may lose a sample the z-buffer draws.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  uint64_t nodesCulled = 0, trianglesCulled = 0;
+  for (double gap : {1e-4, 1e-2, 1.0, 4.0}) {
+    std::vector<Vec3> p = {{-1.6, -1.6, 1.2}, {1.6, -1.6, 1.2}, {1.6, 1.6, 1.2}, {-1.6, 1.6, 1.2}};
+    std::vector<std::vector<int>> f = {{0, 1, 2}, {0, 2, 3}};
+    for (int i = 0; i < 3000; ++i) {
+      const double z = 1.2 - gap - 0.01 * (u(rng) + 1.0);
+      const double spread = 0.3 * (2.0 - z);  // stay inside the quad's shadow
+      const Vec3 c(spread * u(rng), spread * u(rng), z);
+      Vec3 along(u(rng), u(rng), u(rng)), across(u(rng), u(rng), u(rng));
+      along *= 0.06 / cv::norm(along);
+      across = along.cross(across);
+      across *= 1e-4 / std::max(cv::norm(across), 1e-12);
+      const int b = int(p.size());
+      p.insert(p.end(), {c - along, c + along + across, c + along - across});
+      f.push_back({b, b + 1, b + 2});
+    }
+    SceneSettings s = test::tinySettings(300);
+    s.cull = false;
+    s.near = 0.5;
+    s.msaa = gap < 1e-3 ? 4 : 1;
+    const Compared c = expectSameAsZBuffer(test::makeMesh(p, f), s, "gap " + std::to_string(gap));
+    trianglesCulled += c.stats[0].trianglesHzbCulled;
+    nodesCulled += c.stats[1].octreeNodesCulled;
+  }
+  EXPECT_GT(trianglesCulled, 5000u);
+  EXPECT_GT(nodesCulled, 0u);
+}
+
+TEST(HierarchicalExactTest, DenseInterleavedClusters) {
+  // Hundreds of small clusters of triangles at nearby depths, partly in front of each other:
+  // octree nodes are tested against a pyramid built from geometry just in front of them, so
+  // a node test that is not conservative by even a small depth loses visible faces here.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  for (int cluster = 0; cluster < 500; ++cluster) {
+    const Vec3 c(1.4 * u(rng), 1.4 * u(rng), 0.4 * u(rng));
+    for (int i = 0; i < 24; ++i) {
+      const int b = int(p.size());
+      for (int k = 0; k < 3; ++k)
+        p.push_back(c + Vec3(0.12 * u(rng), 0.12 * u(rng), 0.02 * u(rng)));
+      f.push_back({b, b + 1, b + 2});
+    }
+  }
+  SceneSettings s = test::tinySettings(320);
+  s.cull = false;
+  const Compared c = expectSameAsZBuffer(test::makeMesh(p, f), s, "clusters");
+  EXPECT_GT(c.stats[0].trianglesHzbCulled, 30u);
+}
+
+TEST(HierarchicalExactTest, CoplanarTiesWithSmallerIdBehind) {
+  // Two identical coplanar quads; the one drawn first has the larger id, so at equal depth
+  // the later, smaller id must still be drawn (and win every sample).
+  std::vector<Vec3> p = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
+  // Face 0 and 1 are the same quad; faces 2.. repeat it so many ids tie.
+  std::vector<std::vector<int>> f = {{0, 1, 2, 3}, {0, 1, 2, 3}, {1, 2, 3, 0}, {2, 3, 0, 1}};
+  SceneSettings s = test::tinySettings(64);
+  const Compared c = expectSameAsZBuffer(test::makeMesh(p, f), s, "coplanar");
+  EXPECT_GT(c.covered, 500u);
+  const test::Rendered r = test::render(test::makeMesh(p, f), s, "hierarchical");
+  EXPECT_EQ(keyFaceId(r.buffer.row(32)[32]), 0u);
+}
+
+TEST(HierarchicalExactTest, CrowdSmall) {
+  SceneSettings s;
+  auto mesh = referenceScene("crowd", 200, s);
+  if (!mesh) GTEST_SKIP() << "bunny not linked under models/";
+  const Compared c = expectSameAsZBuffer(mesh, s, "crowd 200");
+  EXPECT_GT(c.covered, 5000u);
+  const RenderStats& octree = c.stats[1];
+  EXPECT_GT(octree.octreeNodesVisited, 0u);
+  EXPECT_GT(octree.octreeNodesCulled, 0u);
+  EXPECT_GT(octree.trianglesHzbCulled, 0u);
+  EXPECT_GT(c.stats[0].trianglesHzbCulled, 0u);
+  // The octree transforms only what its visible nodes hold.
+  EXPECT_LT(octree.trianglesRasterized + octree.trianglesHzbCulled,
+            c.stats[0].trianglesRasterized + c.stats[0].trianglesHzbCulled);
+}
+
+TEST(HierarchicalExactTest, CrowdVariants) {
+  // A smaller grid for the option variants: MSAA 4, no culling, another view from the side.
+  SceneSettings s;
+  auto mesh = referenceScene("crowd", 150, s);
+  if (!mesh) GTEST_SKIP() << "bunny not linked under models/";
+  s.grid->count = {4, 1, 4};
+  s.msaa = 4;
+  expectSameAsZBuffer(mesh, s, "crowd 4x4 msaa 4");
+  s.msaa = 1;
+  s.cull = false;
+  expectSameAsZBuffer(mesh, s, "crowd 4x4 no cull");
+  s.cull = true;
+  s.eye = Vec3(1.2, 0.5, 0.3);
+  s.target = Vec3(0.0, 0.1, 0.0);
+  expectSameAsZBuffer(mesh, s, "crowd 4x4 side");
+}
+
+}  // namespace
+}  // namespace zrender
