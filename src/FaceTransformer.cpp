@@ -8,12 +8,26 @@
 
 namespace zrender {
 
+FaceTransformer::FaceTransformer(const Scene& scene, int sampleScale, bool cull)
+    : scene_(scene), scale_(sampleScale), cull_(cull) {}
+
 FaceTransformer::FaceTransformer(const Scene& scene, const Camera& camera, int sampleScale,
                                  bool cull)
-    : scene_(scene), camera_(camera), scale_(sampleScale), cull_(cull) {
+    : FaceTransformer(scene, sampleScale, cull) {
+  beginFrame(camera);
+}
+
+void FaceTransformer::beginFrame(const Camera& camera) {
+  width_ = camera.width;
+  height_ = camera.height;
   const Mat4 viewProjection = camera.projection * camera.view;
-  for (uint32_t k = 0; k < scene.instanceCount(); ++k)
-    mvp_.push_back(viewProjection * scene.modelMatrix(k));
+  mvp_.clear();
+  for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
+    mvp_.push_back(viewProjection * scene_.modelMatrix(k));
+  if (++frame_ == 0) {  // the stamps wrapped around: forget them all
+    std::fill(vertexFrame_.begin(), vertexFrame_.end(), 0u);
+    frame_ = 1;
+  }
 }
 
 void FaceTransformer::computeVertex(const Mat4& m, const Vec3& p, Vertex& v) const {
@@ -26,7 +40,7 @@ void FaceTransformer::computeVertex(const Mat4& m, const Vec3& p, Vertex& v) con
   v.code = (c[0] < -c[3]) | (c[0] > c[3]) << 1 | (c[1] < -c[3]) << 2 | (c[1] > c[3]) << 3 |
            (c[2] < -c[3]) << 4 | (c[2] > c[3]) << 5;
   if (v.code & (kNear | kFar)) return;
-  v.window = clipToWindow(c, camera_.width, camera_.height);
+  v.window = clipToWindow(c, width_, height_);
   const double guard = kGuardBand / scale_;
   if (std::abs(v.window[0]) > guard || std::abs(v.window[1]) > guard) {
     v.code |= kGuard;
@@ -43,8 +57,8 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
     for (size_t v = 0; v < nv; ++v)
       computeVertex(mvp_[k], mesh.positions[v], vertices_[size_t(k) * nv + v]);
-  out.width = camera_.width * scale_;
-  out.height = camera_.height * scale_;
+  out.width = width_ * scale_;
+  out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
     const Vertex* base = vertices_.data() + size_t(k) * nv;
@@ -61,22 +75,24 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
 void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   const Mesh& mesh = *scene_.mesh;
   const size_t nv = mesh.positions.size();
-  if (vertices_.size() != nv * scene_.instanceCount()) {
-    Vertex pending;
-    pending.code = kNotComputed;
-    vertices_.assign(nv * scene_.instanceCount(), pending);
+  if (vertexFrame_.size() != nv * scene_.instanceCount()) {
+    vertices_.resize(nv * scene_.instanceCount());
+    vertexFrame_.assign(nv * scene_.instanceCount(), 0u);
   }
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
-  out.width = camera_.width * scale_;
-  out.height = camera_.height * scale_;
+  out.width = width_ * scale_;
+  out.height = height_ * scale_;
   const uint32_t n = mesh.cornerCount(f);
   const Corner* c = mesh.faceCorners(f);
   corners_.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
-    Vertex& v = vertices_[size_t(k) * nv + size_t(c[i].position)];
-    if (v.code == kNotComputed) computeVertex(mvp_[k], mesh.positions[size_t(c[i].position)], v);
-    corners_[i] = &v;
+    const size_t index = size_t(k) * nv + size_t(c[i].position);
+    if (vertexFrame_[index] != frame_) {
+      computeVertex(mvp_[k], mesh.positions[size_t(c[i].position)], vertices_[index]);
+      vertexFrame_[index] = frame_;
+    }
+    corners_[i] = &vertices_[index];
   }
   appendFace(faceId, corners_.data(), n, out);
 }
@@ -237,8 +253,7 @@ void FaceTransformer::appendClippedFace(uint32_t faceId, const Vertex* const* co
     poly = clipped_.data();
   }
   window_.resize(count);
-  for (uint32_t i = 0; i < count; ++i)
-    window_[i] = clipToWindow(poly[i], camera_.width, camera_.height);
+  for (uint32_t i = 0; i < count; ++i) window_[i] = clipToWindow(poly[i], width_, height_);
   bool ok = false;
   const DepthPlane plane = planeOf(window_.data(), count, ok);
   if (!ok) {

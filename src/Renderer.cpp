@@ -23,7 +23,8 @@ Renderer::Renderer(const Scene& scene, const std::string& algorithm)
     : scene_(scene),
       algorithm_(makeAlgorithm(algorithm)),
       shader_(scene, scene.settings.shading),
-      sampleScale_(scene.settings.msaa == 4 ? 2 : 1) {
+      sampleScale_(scene.settings.msaa == 4 ? 2 : 1),
+      transformer_(scene, sampleScale_, scene.settings.cull) {
   const double t0 = nowMs();
   algorithm_->prepare(scene);
   prepareMs_ = nowMs() - t0;
@@ -37,12 +38,12 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
   geometry_.height = camera.height * sampleScale_;
 
   const double t0 = nowMs();
-  FaceTransformer transformer(scene_, camera, sampleScale_, scene_.settings.cull);
-  if (algorithm_->transformsAll()) transformer.transformAll(geometry_);
+  transformer_.beginFrame(camera);
+  if (algorithm_->transformsAll()) transformer_.transformAll(geometry_);
   const double t1 = nowMs();
 
   buffer_.resize(geometry_.width, geometry_.height);
-  FrameInput input{scene_, camera, transformer, geometry_};
+  FrameInput input{scene_, camera, transformer_, geometry_};
   algorithm_->render(input, buffer_, stats_);
   shader_.shade(buffer_, camera, sampleScale_, color_);
   const double t2 = nowMs();

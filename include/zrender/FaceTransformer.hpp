@@ -14,7 +14,15 @@ namespace zrender {
 class FaceTransformer {
  public:
   // sampleScale: 1, or 2 for MSAA 4 (the four samples of a pixel are a 2 x 2 grid of samples).
+  // Call beginFrame() before transforming faces.
+  FaceTransformer(const Scene& scene, int sampleScale, bool cull);
+  // The same, ready for one frame seen by `camera`.
   FaceTransformer(const Scene& scene, const Camera& camera, int sampleScale, bool cull);
+
+  // Takes the frame's camera and forgets the vertices of the previous frame. The per-vertex
+  // storage is kept from frame to frame: for a model of millions of vertices, allocating and
+  // initialising it again per frame cost more than the lazy transform saves.
+  void beginFrame(const Camera& camera);
 
   // Every face of every instance, in face id order.
   void transformAll(FrameGeometry& out);
@@ -33,7 +41,7 @@ class FaceTransformer {
     Vec4 clip;
     Vec3 window;               // pixels and depth; valid when `code` has no kNeedsClip bit
     FixedPoint snapped{0, 0};  // 1/256 sample units; valid likewise
-    uint32_t code = 0;         // outcode bits below; kNotComputed until transformed (lazy mode)
+    uint32_t code = 0;         // outcode bits below
   };
   enum : uint32_t {
     kLeft = 1,
@@ -44,7 +52,6 @@ class FaceTransformer {
     kFar = 32,        // outside that plane
     kNotFinite = 64,  // a coordinate is NaN or infinite: the face is skipped
     kGuard = 128,     // inside near/far but beyond the guard band: needs the 2D clip
-    kNotComputed = 256,
   };
   static constexpr uint32_t kNeedsClip = kNear | kFar | kGuard | kNotFinite;
 
@@ -59,11 +66,13 @@ class FaceTransformer {
   DepthPlane planeOf(const Vec3* window, uint32_t count, bool& ok) const;
 
   const Scene& scene_;
-  const Camera& camera_;
+  int width_ = 0, height_ = 0;  // pixels
   int scale_;
   bool cull_;
-  std::vector<Mat4> mvp_;         // per instance, model to clip space
-  std::vector<Vertex> vertices_;  // instance-major
+  std::vector<Mat4> mvp_;              // per instance, model to clip space
+  std::vector<Vertex> vertices_;       // instance-major
+  std::vector<uint32_t> vertexFrame_;  // lazy mode: the frame vertices_[i] was computed in
+  uint32_t frame_ = 0;
   // Scratch buffers reused face after face.
   std::vector<const Vertex*> corners_;
   std::vector<Vec4> faceClip_, clipped_, clipScratch_;

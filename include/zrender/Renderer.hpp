@@ -6,6 +6,7 @@
 #include <opencv2/core.hpp>
 
 #include "zrender/Camera.hpp"
+#include "zrender/FaceTransformer.hpp"
 #include "zrender/FrameBuffer.hpp"
 #include "zrender/FrameGeometry.hpp"
 #include "zrender/RenderStats.hpp"
@@ -44,6 +45,7 @@ class Renderer {
   Shader shader_;
   int sampleScale_;
   double prepareMs_ = 0.0;
+  FaceTransformer transformer_;
   FrameBuffer buffer_;
   FrameGeometry geometry_;
   cv::Mat color_;
