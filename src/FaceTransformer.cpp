@@ -97,6 +97,22 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   appendFace(faceId, corners_.data(), n, out);
 }
 
+namespace {
+
+// Sets the plane's clamp range to the corners' depths, widened to the enclosing floats.
+void setDepthRange(DepthPlane& plane, const Vec3* window, uint32_t count) {
+  double lo = window[0][2], hi = window[0][2];
+  for (uint32_t i = 1; i < count; ++i)
+    lo = std::min(lo, window[i][2]), hi = std::max(hi, window[i][2]);
+  float flo = static_cast<float>(std::max(lo, 0.0)), fhi = static_cast<float>(std::min(hi, 1.0));
+  if (double(flo) > lo) flo = std::nextafter(flo, 0.0f);
+  if (double(fhi) < hi) fhi = std::nextafter(fhi, 1.0f);
+  plane.loBits = int32_t(floatBits(std::max(flo, 0.0f)));
+  plane.hiBits = int32_t(floatBits(std::min(fhi, 1.0f)));
+}
+
+}  // namespace
+
 DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok) const {
   // Newell's normal of the window-space polygon (x, y in samples, z depth), through the
   // centroid: z = a x + b y + c. From the unsnapped positions.
@@ -112,6 +128,7 @@ DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok
     plane.a = -normal[0] / normal[2];
     plane.b = -normal[1] / normal[2];
     plane.c = p[2] - plane.a * p[0] - plane.b * p[1];
+    setDepthRange(plane, window, count);
     return plane;
   }
   Vec3 normal(0, 0, 0), centre(0, 0, 0);
@@ -130,6 +147,7 @@ DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok
   plane.a = -normal[0] / normal[2];
   plane.b = -normal[1] / normal[2];
   plane.c = centre[2] - plane.a * centre[0] - plane.b * centre[1];
+  setDepthRange(plane, window, count);
   return plane;
 }
 

@@ -189,13 +189,15 @@ void IntervalAlgorithm::resolveSpan(int left, int right, DepthKey* row) {
 
 // Why the proof is sound. For a candidate at column t let D(t) = a (t + 0.5) + b (y + 0.5) + c
 // (exact reals), f(t) the unclamped float that DepthPlane::at computes (three double roundings,
-// one float rounding) and z(t) = clamp(f(t), 0, 1) the depth in the key.
+// one float rounding) and z(t) = clamp(f(t), lo, hi) the depth in the key, [lo, hi] being the
+// face's own corner depth range (DepthPlane::minDepth/maxDepth).
 //  1. Every rounding step is monotone, so f is monotone in t: its value at the run's ends
 //     bounds it on the whole run.
 //  2. |f - D| <= 2^-23 M + 2^-149 with M = |a| max|t + 0.5| + |b (y + 0.5)| + |c|; bound()
 //     returns twice that (slack for the double arithmetic of the test itself).
-//  3. If 0 < z_W < 1 and z_C > 0 at both ends, then by 1. f_W < 1 and f_C > 0 on the run, so
-//     z_W = max(f_W, 0) >= f_W and z_C = min(f_C, 1) <= f_C (no -0, no NaN: those fail the tests).
+//  3. If lo_W < z_W < hi_W and z_C > lo_C at both ends, then by 1. f_W < hi_W and f_C > lo_C on
+//     the run, so z_W = max(f_W, lo_W) >= f_W and z_C = min(f_C, hi_C) <= f_C (no -0, no NaN:
+//     those fail the tests).
 //  4. The exact gap g = D_C - D_W is affine; at each end g >= (z_C - z_W) - (E_W + E_C), so on
 //     the run g >= h - (E_W + E_C), h the linear interpolation of the end gaps of the keys.
 //  5. Where h > 2 (E_W + E_C): f_C - f_W >= g - (E_W + E_C) > 0, hence (by 3.) z_C > z_W and
@@ -203,7 +205,8 @@ void IntervalAlgorithm::resolveSpan(int left, int right, DepthKey* row) {
 //     to the exact keys.
 int IntervalAlgorithm::provenExtent(size_t w, int x, int right) const {
   const Candidate& win = candidates_[w];
-  if (!(win.zLeft > 0.0f && win.zLeft < 1.0f && win.zRight > 0.0f && win.zRight < 1.0f))
+  const float winLo = win.plane->minDepth(), winHi = win.plane->maxDepth();
+  if (!(win.zLeft > winLo && win.zLeft < winHi && win.zRight > winLo && win.zRight < winHi))
     return x - 1;
   const double xMax = std::max(std::abs(x + 0.5), std::abs(right + 0.5));
   const auto bound = [xMax](const Candidate& c) {
@@ -216,7 +219,8 @@ int IntervalAlgorithm::provenExtent(size_t w, int x, int right) const {
     const Candidate& c = candidates_[i];
     // The same plane gives the same float depth at every sample: the smaller id wins all along.
     if (samePlane(*c.plane, *win.plane) && win.id < c.id) continue;
-    if (!(c.zLeft > 0.0f && c.zRight > 0.0f)) return x - 1;
+    const float cLo = c.plane->minDepth();
+    if (!(c.zLeft > cLo && c.zRight > cLo)) return x - 1;
     const double threshold = 2.0 * (winBound + bound(c));
     const double gapLeft = double(c.zLeft) - double(win.zLeft);
     const double gapRight = double(c.zRight) - double(win.zRight);

@@ -22,14 +22,8 @@ constexpr size_t kAhead = 4;
 
 }  // namespace
 
-OctreeNodeTest::OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples, int scale)
-    : vp_(camera.projection * camera.view), width_(widthSamples), height_(heightSamples) {
-  const Mat4& p = camera.projection;
-  const double b = std::abs(p(2, 3)) * 0.5;
-  const double focal = std::min(std::abs(p(0, 0)) * width_, std::abs(p(1, 1)) * height_) * 0.5;
-  const double delta = std::sqrt(2.0) * scale / 512.0;
-  marginPerDepth_ = b * delta / (focal * kGrazingSine);
-}
+OctreeNodeTest::OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples)
+    : vp_(camera.projection * camera.view), width_(widthSamples), height_(heightSamples) {}
 
 bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid) const {
   // Clip-space corners: base + any subset of the three edge vectors.
@@ -75,8 +69,10 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
   const double minY = std::max(std::floor(y0 - 1.5), 0.0);
   const double maxY = std::min(std::ceil(y1 + 0.5), height_ - 1.0);
   if (minX > maxX || minY > maxY) return true;  // off screen
-  // Below the nearest corner by the extrapolation margin, plus rounding of the planes.
-  const double low = z0 - marginPerDepth_ / w0 - 1e-6 * (1.0 + std::abs(z0));
+  // No sample of a face is nearer than the face's nearest corner (DepthPlane clamps to its
+  // corner depths), and the corners lie in the box: below the box's nearest corner by the
+  // rounding of the two matrix products only.
+  const double low = z0 - 1e-6 * (1.0 + std::abs(z0));
   // Id 0: the box's key wins every tie, so only a strictly farther sample key rejects.
   const DepthKey key = keyAtOrBelow(low, 0);
   return pyramid.occludes(int(minX), int(minY), int(maxX), int(maxY), key, kNodeQueryNodes);
@@ -88,7 +84,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   const std::vector<uint32_t>& faces = octree_.faces();
   FrameGeometry& g = input.geometry;
   const Camera& camera = input.camera;
-  const OctreeNodeTest test(camera, fb.width(), fb.height(), input.transformer.sampleScale());
+  const OctreeNodeTest test(camera, fb.width(), fb.height());
   const Vec3& eye = camera.eye;
 
   stack_.clear();

@@ -102,10 +102,16 @@ TEST(NearestKeyTest, IsABoundOfEverySampleKeyInTheRectangle) {
   EXPECT_GT(tight, 2900);  // the margin is a few ulps, not a loose bound
 }
 
-TEST(NearestKeyTest, NanPlaneIsNeverOccluded) {
+TEST(NearestKeyTest, NanPlaneBoundStaysBelowItsSamples) {
+  // A NaN plane gives the face's farthest corner depth at every sample (DepthPlane's clamp);
+  // the bound must not exceed that.
   DepthPlane p;
   p.a = std::nan("");
-  EXPECT_EQ(nearestKeyOver(p, 5, 0, 0, 3, 3), 0u);
+  p.loBits = int32_t(floatBits(0.25f));
+  p.hiBits = int32_t(floatBits(0.75f));
+  EXPECT_EQ(p.at(2, p.rowBase(1)), 0.75f);
+  EXPECT_LE(nearestKeyOver(p, 5, 0, 0, 3, 3), makeDepthKey(0.75f, 5));
+  EXPECT_GE(nearestKeyOver(p, 5, 0, 0, 3, 3), makeDepthKey(0.25f, 5));
 }
 
 // Draws one triangle (sample coordinates, positively oriented) through an HzbRasterizer.
@@ -301,7 +307,7 @@ TEST(OctreeTest, HiddenNodesHoldNoVisibleFace) {
 
   Octree tree;
   tree.build(scene);
-  const OctreeNodeTest test(camera, fb.width(), fb.height(), 1);
+  const OctreeNodeTest test(camera, fb.width(), fb.height());
   int hiddenNodes = 0, hiddenFaces = 0;
   for (const OctreeNode& node : tree.nodes()) {
     if (!test.hidden(node, r.pyramid())) continue;

@@ -38,7 +38,9 @@ inline DepthKey nearestKeyOver(const DepthPlane& plane, uint32_t faceId, int min
   // to spare (sample indices inside the image are >= 0).
   const double reach =
       std::abs(plane.a) * (maxX + 1.0) + std::abs(plane.b) * (maxY + 1.0) + std::abs(plane.c);
-  return keyAtOrBelow(v - reach * 0x1p-49, faceId);
+  // No sample of the face is nearer than its nearest corner (DepthPlane's clamp).
+  return std::max(keyAtOrBelow(v - reach * 0x1p-49, faceId),
+                  makeDepthKey(plane.minDepth(), faceId));
 }
 
 // The triangle stage shared by `hierarchical` and `octree`: a triangle whose nearest key is

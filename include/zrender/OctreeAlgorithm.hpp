@@ -12,37 +12,20 @@ namespace zrender {
 // frame.
 class OctreeNodeTest {
  public:
-  // Faces seen closer than this sine to edge-on are the ones the depth margin may not cover
-  // (see marginPerDepth_).
-  static constexpr double kGrazingSine = 1e-5;
-
-  // `widthSamples` x `heightSamples`: the buffer's size; `scale`: samples per pixel side.
-  OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples, int scale);
+  // `widthSamples` x `heightSamples`: the buffer's size.
+  OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples);
 
   // Whether every face below the node can be skipped: its box lies wholly outside one plane
   // of the view volume (the faces are clipped away), or wholly in front of the near plane and
-  // behind the z-pyramid over its screen bounds (widened by a sample for snapping), with the
-  // depth margin. A box that reaches the near plane is never rejected for occlusion. NaN
-  // anywhere keeps the node.
+  // behind the z-pyramid over its screen bounds (widened by a sample for snapping). Exact
+  // because no sample of a face is nearer than the face's nearest corner (DepthPlane clamps to
+  // its corner depths) and the corners lie in the box. A box that reaches the near plane is
+  // never rejected for occlusion. NaN anywhere keeps the node.
   bool hidden(const OctreeNode& node, const DepthPyramid& pyramid) const;
 
  private:
   Mat4 vp_;                // world to clip space
   double width_, height_;  // samples
-  // The faces' depth planes are fitted to their unsnapped window vertices, but coverage is
-  // decided on snapped ones: a covered sample can lie up to delta = sqrt(2) * scale / 512
-  // samples outside a face, where its plane is extrapolated by |grad z| * delta. For a face
-  // whose plane passes at distance d from the eye, |grad z| <= B / (f * d), with B = far *
-  // near / (far - near) (window depth = f / (f - n) - B / w) and f the focal length in
-  // samples; d >= w * sin(phi) for a face seen at angle phi from edge-on at eye depth >= w.
-  // So the depth can dip below the box's nearest corner by at most marginPerDepth_ / w for
-  // every face seen at more than kGrazingSine from edge-on. Measured on `crowd` at 1800 x 1800
-  // (6.9M faces): 95 visible faces dip below their vertices' depth, the worst by 1.3e-4, as a
-  // face at sine 1.8e-4 would; the margin covers eighteen times that. It costs culling: 40%
-  // more faces transformed on `crowd` than with no margin (sine 1e-4 would cost 5%). No finite
-  // margin covers a face seen exactly edge-on whose snapped sliver still covers a sample (it
-  // would be a poke-through artefact of the z-buffer too): that case is left to the margin.
-  double marginPerDepth_;
 };
 
 // Greene, Kass and Miller's hierarchical z-buffer with an object-space octree: the octree is

@@ -116,25 +116,36 @@ inline float bitsToFloat(uint32_t u) {
   return f;
 }
 
+constexpr int32_t kOneBits = 0x3F800000;  // the bits of 1.0f
+
 // Window depth of a planar face as an affine function of the sample position:
-// z = a * x + b * y + c with x, y in samples (centre of sample i at i + 0.5), z in 0..1.
+// z = a * x + b * y + c with x, y in samples (centre of sample i at i + 0.5), z in 0..1,
+// clamped to the range of the face's own corner depths [minDepth(), maxDepth()].
 // Every algorithm evaluates it through rowBase() and at() so the float result is the same bits
 // whatever the visiting order (the build disables FMA contraction for this reason).
+//
+// Why the clamp: coverage is decided on snapped corners, the plane comes from the unsnapped
+// ones, so a sample can lie just outside the exact face, where the plane of a face seen almost
+// edge-on extrapolates far beyond its corners. Clamped, no sample of a face is ever nearer
+// than its nearest corner, which makes the octree's box test exact.
 struct DepthPlane {
   double a = 0.0, b = 0.0, c = 1.0;
+  int32_t loBits = 0;         // bits of the least corner depth (a float in [0, 1])
+  int32_t hiBits = kOneBits;  // bits of the greatest
 
   double rowBase(int row) const { return b * (row + 0.5) + c; }
   float at(int column, double rowBase) const { return atCentre(column + 0.5, rowBase); }
   // The same with the sample centre's x given (column + 0.5, exact in a double), for loops
   // that step it by 1.0 instead of converting the column each time.
   float atCentre(double xCentre, double rowBase) const {
-    // Rounding at the edges of a face can step just outside the clip range: clamp to [0, 1].
-    // On the bits, as integers: branch-free, and -0.0 (or a NaN) cannot slip through as a
-    // negative float whose key would sort above the background.
+    // Clamped on the bits, as integers (non-negative floats order like their bits): branch
+    // free, and -0.0 or a NaN cannot slip through as a negative float whose key would sort
+    // above the background.
     const int32_t bits = static_cast<int32_t>(floatBits(static_cast<float>(a * xCentre + rowBase)));
-    return bitsToFloat(static_cast<uint32_t>(std::min(std::max(bits, 0), kOneBits)));
+    return bitsToFloat(static_cast<uint32_t>(std::min(std::max(bits, loBits), hiBits)));
   }
-  static constexpr int32_t kOneBits = 0x3F800000;  // the bits of 1.0f
+  float minDepth() const { return bitsToFloat(uint32_t(loBits)); }
+  float maxDepth() const { return bitsToFloat(uint32_t(hiBits)); }
 };
 
 // A sample's visibility as one ordered 64-bit key: the float depth's bits (monotonic for
