@@ -316,3 +316,41 @@ TEST(DepthRule, KeyOrdersByDepthThenId) {
 
 }  // namespace
 }  // namespace zrender
+
+namespace zrender {
+namespace {
+
+TEST(DepthRule, DepthIsClampedToTheFaceCornerRange) {
+  DepthPlane p{0.1, 0.0, 0.0};
+  p.loBits = int32_t(floatBits(0.25f));
+  p.hiBits = int32_t(floatBits(0.5f));
+  EXPECT_EQ(p.at(0, p.rowBase(0)), 0.25f);  // 0.05 raised to the nearest corner
+  EXPECT_EQ(p.at(3, p.rowBase(0)), 0.35f);  // inside the range: the plane itself
+  EXPECT_EQ(p.at(9, p.rowBase(0)), 0.5f);   // 0.95 lowered to the farthest corner
+  DepthPlane negativeZero{0.0, 0.0, -0.0};
+  EXPECT_EQ(floatBits(negativeZero.at(0, -0.0)), 0u);  // -0.0 becomes +0.0
+}
+
+TEST(DepthRule, TransformSetsTheRangeFromTheCornerDepths) {
+  // A triangle from z = 0 to z = 1 seen from z = 2: corner depths at view distances 2 and 1.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {0, 1, 1}}, {{0, 1, 2}});
+  Warnings w;
+  const Scene scene = makeScene(test::tinySettings(16), mesh, w);
+  const Camera camera = makeCamera(scene);
+  FaceTransformer transformer(scene, camera, 1, true);
+  FrameGeometry g;
+  transformer.transformAll(g);
+  ASSERT_EQ(g.faces.size(), 1u);
+  const double n = 0.1, f = 10.0;
+  auto windowDepth = [&](double d) {
+    return 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * d)) + 0.5;
+  };
+  const DepthPlane& p = g.faces[0].plane;
+  EXPECT_LE(double(p.minDepth()), windowDepth(1.0));
+  EXPECT_NEAR(p.minDepth(), windowDepth(1.0), 1e-7);
+  EXPECT_GE(double(p.maxDepth()), windowDepth(2.0));
+  EXPECT_NEAR(p.maxDepth(), windowDepth(2.0), 1e-7);
+}
+
+}  // namespace
+}  // namespace zrender
