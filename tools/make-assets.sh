@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Renders the README's pictures into assets/ with zrender itself (after tools/setup.sh).
+#   tools/make-assets.sh
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+cd "$root"
+z=build/zrender
+mkdir -p assets
+$z bunny -o assets/bunny.png --width 900 --height 900
+for alg in zbuffer scanline interval hierarchical octree; do
+  $z bunny --alg "$alg" -o "assets/bunny-$alg.png" --width 360 --height 360
+done
+$z spot --shading texture -o assets/spot.png --width 900 --height 900
+$z teapot --shading phong -o assets/teapot.png --width 900 --height 900
+# MSAA: the teapot's lid at a low resolution, one and four samples per pixel.
+$z teapot --shading flat --width 160 --height 120 --eye 1.2,4.2,4.5 --target 0.6,2.6,0 \
+  -o assets/msaa1.png
+$z teapot --shading flat --width 160 --height 120 --eye 1.2,4.2,4.5 --target 0.6,2.6,0 \
+  --msaa 4 -o assets/msaa4.png
+$z spot --shading texture --turntable 12 -o "/tmp/zrender-turntable-%02d.png" \
+  --contact-sheet assets/turntable.png --width 300 --height 300
+rm -f /tmp/zrender-turntable-*.png
+$z crowd -o assets/crowd.png --width 900 --height 900
+$z crowd --shading id -o assets/crowd-ids.png --width 900 --height 900
