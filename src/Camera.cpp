@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "zrender/Error.hpp"
 
 namespace zrender {
 
@@ -32,6 +36,17 @@ Camera makeCamera(const Scene& scene) {
   }
   cam.view = lookAt(cam.eye, cam.target, cam.up);
   cam.projection = perspective(cam.fovy, cam.aspect, cam.near, cam.far);
+  // validateScene keeps a camera given in full finite; fit can still overflow on a model of
+  // huge coordinates (1e300: the radius squared, or far * near, is infinite), and a NaN camera
+  // would silently draw nothing.
+  for (int i = 0; i < 16; ++i) {
+    if (!std::isfinite(cam.view.val[i]) || !std::isfinite(cam.projection.val[i])) {
+      char radius[32];
+      std::snprintf(radius, sizeof radius, "%g", scene.boundsRadius);
+      throw InputError(s.modelPath.string() + ": cannot frame the model: its bounding sphere " +
+                       "(radius " + radius + ") overflows the camera");
+    }
+  }
   return cam;
 }
 

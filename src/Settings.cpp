@@ -15,6 +15,8 @@
 
 #include <json/json.h>
 
+#include "zrender/Transforms.hpp"
+
 namespace zrender {
 
 namespace {
@@ -474,6 +476,22 @@ void validateScene(const SceneSettings& scene, const std::string& where) {
   checkSize(where, "width", scene.width);
   checkSize(where, "height", scene.height);
   checkProjection(where, scene.fovy, scene.aspect, scene.near, scene.far);
+  if (!scene.fit) {
+    // Extreme finite values can still overflow the projection (2 far near / (near - far) once
+    // far near passes 1e308, 1 / tan of a denormal fovy), and a non-finite camera would draw
+    // nothing. fit replaces near and far (makeCamera checks its own camera).
+    const double aspect =
+        scene.aspect > 0.0 ? scene.aspect : double(scene.width) / double(scene.height);
+    const Mat4 projection = perspective(scene.fovy, aspect, scene.near, scene.far);
+    for (int i = 0; i < 16; ++i) {
+      if (!std::isfinite(projection.val[i])) {
+        failKey(where, "project",
+                "fovy " + formatNumber(scene.fovy) + ", aspect " + formatNumber(aspect) +
+                    ", near " + formatNumber(scene.near) + " and far " + formatNumber(scene.far) +
+                    " overflow the projection");
+      }
+    }
+  }
   checkMsaa(where, scene.msaa);
   if (!std::isfinite(scene.angle)) {
     failKey(where, "angle", "expected a finite number, got " + formatNumber(scene.angle));

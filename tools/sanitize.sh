@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Builds everything with AddressSanitizer and UndefinedBehaviorSanitizer (-DZRENDER_SANITIZE=ON)
+# in its own folder and runs the whole test suite there; any sanitizer report fails its test
+# (the build passes -fno-sanitize-recover=all, so a report aborts the process).
+#   tools/sanitize.sh [CTEST_ARGS...]     e.g. tools/sanitize.sh -R HardFiles
+# Environment: ZRENDER_SANITIZE_BUILD (default build-asan), JOBS (default: processor count).
+set -euo pipefail
+
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${ZRENDER_SANITIZE_BUILD:-$root/build-asan}
+jobs=${JOBS:-$(nproc)}
+
+if [[ ! -f $build/build.ninja ]]; then
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZRENDER_SANITIZE=ON \
+    >/dev/null
+fi
+ninja -C "$build"
+
+# Reports name the source line; leaks are checked at exit; UBSan prints a stack.
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+cd "$build"
+ctest --output-on-failure -j "$jobs" "$@"
