@@ -21,6 +21,7 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
+mkdir -p models
 # The reference models stay out of the history: link them from ../shared/models.
 shared="$root/../shared/models"
 for model in bunny spot teapot; do
