@@ -7,16 +7,6 @@
 
 namespace zrender {
 
-namespace {
-
-// `hierarchical` visits triangles in bands of 32 sample rows, top to bottom, face id order
-// within a band: the rows a triangle touches are then still in cache from its neighbours, and
-// the buffer is cleared just ahead of the band being drawn. Within a band the id order is
-// kept, so a scene whose faces come front to back in the file keeps most of its culling.
-constexpr int kBandShift = 5;
-
-}  // namespace
-
 void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
   // The clipped sample bounds, as TriangleSetup::setup computes them, before the edge
   // functions: a rejected triangle costs the bounds, one plane evaluation and a few loads.
@@ -45,35 +35,12 @@ void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
 }
 
 void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
-  const FrameGeometry& g = input.geometry;
-  const int width = fb.width(), height = fb.height();
-  const int bandCount = ((height - 1) >> kBandShift) + 1;
-
-  // Counting sort of the triangles by the band of their first row, stable (face id order
-  // within a band); triangles that miss the image are dropped here.
-  band_.resize(g.triangles.size());
-  bandStart_.assign(size_t(bandCount) + 1, 0);
-  for (size_t i = 0; i < g.triangles.size(); ++i) {
-    const FixedPoint* v = g.triangles[i].v;
-    const int top = std::max(firstSampleAtOrAfter(std::min({v[0].y, v[1].y, v[2].y})), 0);
-    const int bottom = lastSampleAtOrBefore(std::max({v[0].y, v[1].y, v[2].y}));
-    const int left = firstSampleAtOrAfter(std::min({v[0].x, v[1].x, v[2].x}));
-    const int right = lastSampleAtOrBefore(std::max({v[0].x, v[1].x, v[2].x}));
-    const bool inside =
-        top <= std::min(bottom, height - 1) && right >= 0 && left < width && left <= right;
-    band_[i] = inside ? uint32_t(top >> kBandShift) : uint32_t(bandCount);
-    if (inside) ++bandStart_[band_[i] + 1];
-  }
-  for (int b = 0; b < bandCount; ++b) bandStart_[size_t(b) + 1] += bandStart_[size_t(b)];
-  // Copied into band order (reading the array once in order and appending to each band's
-  // run), so that the loop below reads the triangles sequentially.
-  sorted_.resize(bandStart_[size_t(bandCount)]);
-  cursor_.assign(bandStart_.begin(), bandStart_.end() - 1);
-  for (size_t i = 0; i < g.triangles.size(); ++i)
-    if (band_[i] < uint32_t(bandCount)) sorted_[cursor_[band_[i]]++] = g.triangles[i];
-
+  // Band order (face id order within a band) keeps the crowd's front-to-back order and the
+  // z-buffer's cache locality.
+  const std::vector<ScreenTriangle>& triangles =
+      bands_.sort(input.geometry, fb.width(), fb.height());
   rasterizer_.begin(fb);
-  for (const ScreenTriangle& t : sorted_) rasterizer_.drawTriangle(t, stats);
+  for (const ScreenTriangle& t : triangles) rasterizer_.drawTriangle(t, stats);
   rasterizer_.finish();
 }
 

@@ -14,8 +14,8 @@ uint32_t packRgb(double r, double g, double b) {
   return (q(r) << 16) | (q(g) << 8) | q(b);
 }
 
-// Newell normal of a face's corners (model space), normalized; zero for a degenerate face.
-Vec3 newellNormal(const Mesh& mesh, size_t face) {
+// Newell's sum over a face's corners (model space): the face normal times twice its area.
+Vec3 newellSum(const Mesh& mesh, size_t face) {
   const Corner* c = mesh.faceCorners(face);
   const uint32_t n = mesh.cornerCount(face);
   Vec3 normal(0, 0, 0);
@@ -25,6 +25,12 @@ Vec3 newellNormal(const Mesh& mesh, size_t face) {
     normal += Vec3((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
                    (p[0] - q[0]) * (p[1] + q[1]));
   }
+  return normal;
+}
+
+// The unit normal of a face; zero for a degenerate face.
+Vec3 newellNormal(const Mesh& mesh, size_t face) {
+  const Vec3 normal = newellSum(mesh, face);
   const double len = cv::norm(normal);
   return len > 0.0 ? normal / len : Vec3(0, 0, 0);
 }
@@ -67,16 +73,10 @@ Shader::Shader(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode
     // Smooth normals: area-weighted sum of the normals of the faces around each position.
     smoothNormals_.assign(mesh.positions.size(), Vec3(0, 0, 0));
     for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const Vec3 weighted = newellSum(mesh, f);
       const Corner* c = mesh.faceCorners(f);
-      const uint32_t n = mesh.cornerCount(f);
-      Vec3 weighted(0, 0, 0);
-      for (uint32_t i = 0; i < n; ++i) {
-        const Vec3& p = mesh.positions[size_t(c[i].position)];
-        const Vec3& q = mesh.positions[size_t(c[(i + 1) % n].position)];
-        weighted += Vec3((p[1] - q[1]) * (p[2] + q[2]), (p[2] - q[2]) * (p[0] + q[0]),
-                         (p[0] - q[0]) * (p[1] + q[1]));
-      }
-      for (uint32_t i = 0; i < n; ++i) smoothNormals_[size_t(c[i].position)] += weighted;
+      for (uint32_t i = 0; i < mesh.cornerCount(f); ++i)
+        smoothNormals_[size_t(c[i].position)] += weighted;
     }
     for (Vec3& n : smoothNormals_) n = safeNormalize(n);
   }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "zrender/DepthPyramid.hpp"
+#include "zrender/TriangleBands.hpp"
 #include "zrender/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -83,7 +84,8 @@ class HzbRasterizer {
 // Greene, Kass and Miller's hierarchical z-buffer without the object-space octree: every face
 // is transformed (transformsAll), and each triangle is tested against the z-pyramid before
 // rasterization. Triangles are visited in bands of sample rows, top to bottom, in face id
-// order within a band (see the .cpp).
+// order within a band (TriangleBands): a scene whose faces come front to back in the file keeps
+// most of its culling.
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }
@@ -91,10 +93,7 @@ class HierarchicalAlgorithm : public VisibilityAlgorithm {
 
  private:
   HzbRasterizer rasterizer_;
-  // Scratch reused from frame to frame: each triangle's band, the bands' starts, and the
-  // triangles copied in band order.
-  std::vector<uint32_t> band_, bandStart_, cursor_;
-  std::vector<ScreenTriangle> sorted_;
+  TriangleBands bands_;
 };
 
 }  // namespace zrender

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <vector>
+
+#include "zrender/FrameGeometry.hpp"
+
+namespace zrender {
+
+// The triangles of a frame in bands of 32 sample rows, top to bottom, in submission (face id)
+// order within a band, and copied so that a pixel loop reads them sequentially: the rows a
+// triangle touches are then still in cache from its neighbours. Used by the triangle-based
+// algorithms; the order never changes their result (DepthKey ordering is order-independent).
+class TriangleBands {
+ public:
+  static constexpr int kBandShift = 5;  // 32 rows
+
+  // The triangles of `g` that reach the width x height sample image, sorted by the band of
+  // their first row (a counting sort: linear, stable). Valid until the next call.
+  const std::vector<ScreenTriangle>& sort(const FrameGeometry& g, int width, int height);
+
+ private:
+  std::vector<uint32_t> band_, bandStart_, cursor_;  // scratch kept from frame to frame
+  std::vector<ScreenTriangle> sorted_;
+};
+
+}  // namespace zrender
