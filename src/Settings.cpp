@@ -476,13 +476,15 @@ void validateScene(const SceneSettings& scene, const std::string& where) {
   checkSize(where, "width", scene.width);
   checkSize(where, "height", scene.height);
   checkProjection(where, scene.fovy, scene.aspect, scene.near, scene.far);
-  if (!scene.fit) {
+  {
     // Extreme finite values can still overflow the projection (2 far near / (near - far) once
     // far near passes 1e308, 1 / tan of a denormal fovy), and a non-finite camera would draw
-    // nothing. fit replaces near and far (makeCamera checks its own camera).
+    // nothing. fit replaces near and far (makeCamera checks its own), but keeps fovy and aspect,
+    // so those are checked with a harmless near and far.
     const double aspect =
         scene.aspect > 0.0 ? scene.aspect : double(scene.width) / double(scene.height);
-    const Mat4 projection = perspective(scene.fovy, aspect, scene.near, scene.far);
+    const double near = scene.fit ? 1.0 : scene.near, far = scene.fit ? 2.0 : scene.far;
+    const Mat4 projection = perspective(scene.fovy, aspect, near, far);
     for (int i = 0; i < 16; ++i) {
       if (!std::isfinite(projection.val[i])) {
         failKey(where, "project",
