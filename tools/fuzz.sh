@@ -5,7 +5,9 @@
 # copied to a temporary folder, so new corpus entries stay out of the repository. Prints the
 # executions of each target and exits non-zero if any target crashed, hung or broke a contract;
 # the input that did it is kept under $ZRENDER_FUZZ_ARTIFACTS (default /tmp/zrender-fuzz-artifacts).
-# Environment: ZRENDER_FUZZ_BUILD (build folder), ZRENDER_FUZZ_KEEP=1 keeps the grown corpus.
+# Environment: ZRENDER_FUZZ_BUILD (build folder), ZRENDER_FUZZ_KEEP=1 keeps the grown corpus,
+# ZRENDER_FUZZ_SEED (libFuzzer's -seed; 0, the default, picks one at random; CI fixes it so a
+# run explores the same inputs each time).
 set -euo pipefail
 
 usage() { echo "usage: $0 SECONDS [obj|settings|render ...]" >&2; exit 2; }
@@ -53,7 +55,7 @@ for t in "${targets[@]}"; do
   set +e
   # -timeout: an input taking over 10 s counts as a hang; -rss_limit_mb: as a memory blow-up.
   # TMPDIR: the targets' scratch files (an .mtl beside the model) stay in the work folder.
-  TMPDIR=$work "$build/fuzz/fuzz_$t" "${dict[@]}" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  TMPDIR=$work "$build/fuzz/fuzz_$t" "${dict[@]}" -max_total_time="$seconds" -seed="${ZRENDER_FUZZ_SEED:-0}" -timeout=10 -rss_limit_mb=2048 \
     -max_len=8192 -print_final_stats=1 -artifact_prefix="$artifacts/$t-" "$corpus" >"$log" 2>&1
   rc=$?
   set -e
