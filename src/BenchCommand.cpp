@@ -191,10 +191,8 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
         referenceRaster = row.rasterMs;
         referenceFrame = row.frameMs;
       } else {
-        // Keys hold depth and id, so equal keys mean equal depth and id buffers.
         row.identical =
-            renderer.buffer() == reference &&
-            cv::countNonZero(cv::Mat(renderer.color() != referenceColor).reshape(1)) == 0;
+            identicalFrames(renderer.buffer(), renderer.color(), reference, referenceColor);
       }
       row.rasterSpeedup = row.rasterMs > 0 ? referenceRaster / row.rasterMs : 0;
       row.frameSpeedup = row.frameMs > 0 ? referenceFrame / row.frameMs : 0;

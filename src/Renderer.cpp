@@ -8,6 +8,12 @@
 
 namespace zrender {
 
+bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuffer& b,
+                     const cv::Mat& colorB) {
+  if (!(a == b) || colorA.size() != colorB.size() || colorA.type() != colorB.type()) return false;
+  return cv::countNonZero(cv::Mat(colorA != colorB).reshape(1)) == 0;
+}
+
 double nowMs() {
   using namespace std::chrono;
   return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();

@@ -52,6 +52,11 @@ class Renderer {
   RenderStats stats_;
 };
 
+// Whether two frames agree bit for bit: keys (so depth and face ids) and colors. What
+// `zrender bench` checks every algorithm against the z-buffer with.
+bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuffer& b,
+                     const cv::Mat& colorB);
+
 // Milliseconds since an arbitrary start (steady clock).
 double nowMs();
 
