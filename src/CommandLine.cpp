@@ -60,6 +60,20 @@ void finishVectors(const VectorOptions& v, SceneOverrides& o) {
   set(v.axis, o.axis);
 }
 
+// Parses argv into `app`'s options. False when help was asked for (and printed); a bad
+// option is an InputError.
+bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return false;
+  } catch (const CLI::ParseError& e) {
+    throw InputError("command line: " + oneLine(e.what()));
+  }
+  return true;
+}
+
 int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
   const bool bench = argc > 1 && std::strcmp(argv[1], "bench") == 0;
   VectorOptions vectors;
@@ -75,14 +89,7 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
     app.add_option("--json", options.json, "write the results as JSON");
     app.add_option("--chart", options.chart, "write a bar chart (PNG)");
     addSceneOptions(app, options.overrides, vectors, options.settings);
-    try {
-      app.parse(argc - 1, argv + 1);
-    } catch (const CLI::CallForHelp&) {
-      out << app.help();
-      return 0;
-    } catch (const CLI::ParseError& e) {
-      throw InputError("command line: " + oneLine(e.what()));
-    }
+    if (!parseArguments(app, argc - 1, argv + 1, out)) return 0;
     finishVectors(vectors, options.overrides);
     size_t start = 0;
     while (!algs.empty() && start <= algs.size()) {
@@ -111,14 +118,7 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
       ->check(CLI::Range(1, 100000));
   app.add_option("--contact-sheet", options.contactSheet, "tile turntable frames into one PNG");
   addSceneOptions(app, options.overrides, vectors, options.settings);
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    out << app.help();
-    return 0;
-  } catch (const CLI::ParseError& e) {
-    throw InputError("command line: " + oneLine(e.what()));
-  }
+  if (!parseArguments(app, argc, argv, out)) return 0;
   finishVectors(vectors, options.overrides);
   return runRender(options, out, err);
 }

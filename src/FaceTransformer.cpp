@@ -111,6 +111,48 @@ void setDepthRange(DepthPlane& plane, const Vec3* window, uint32_t count) {
   plane.hiBits = int32_t(floatBits(std::min(fhi, 1.0f)));
 }
 
+// The plane with `normal` through `point` (samples, samples, depth), clamped to the depth
+// range of the polygon `window`; `ok` is false when the plane is vertical on screen.
+DepthPlane planeThrough(const Vec3& normal, const Vec3& point, const Vec3* window, uint32_t count,
+                        bool& ok) {
+  DepthPlane plane;
+  ok = normal[2] != 0.0 && std::isfinite(normal[2]);
+  if (!ok) return plane;
+  plane.a = -normal[0] / normal[2];
+  plane.b = -normal[1] / normal[2];
+  plane.c = point[2] - plane.a * point[0] - plane.b * point[1];
+  setDepthRange(plane, window, count);
+  return plane;
+}
+
+// Appends a face (its snapped corners and positively oriented pieces) to the frame.
+void pushFace(uint32_t faceId, const DepthPlane& plane, bool frontFacing, const FixedPoint* corners,
+              uint32_t cornerCount, const std::array<uint32_t, 3>* pieces, uint32_t pieceCount,
+              FrameGeometry& out) {
+  ScreenFace face;
+  face.id = faceId;
+  face.firstVertex = uint32_t(out.vertices.size());
+  face.vertexCount = cornerCount;
+  face.firstTriangle = uint32_t(out.triangles.size());
+  face.triangleCount = pieceCount;
+  face.plane = plane;
+  face.frontFacing = frontFacing;
+  const uint32_t faceIndex = uint32_t(out.faces.size());
+  out.vertices.insert(out.vertices.end(), corners, corners + cornerCount);
+  for (uint32_t i = 0; i < pieceCount; ++i) {
+    const std::array<uint32_t, 3>& t = pieces[i];
+    out.triangles.push_back(
+        ScreenTriangle{{corners[t[0]], corners[t[1]], corners[t[2]]}, faceIndex, faceId, plane});
+  }
+  out.faces.push_back(face);
+}
+
+// Positive orientation (orient2d > 0) of a triangle's corners: y points down in window space,
+// so a front face (counter-clockwise in NDC) has to be walked the other way round.
+std::array<uint32_t, 3> orientedPiece(bool frontFacing) {
+  return frontFacing ? std::array<uint32_t, 3>{0, 2, 1} : std::array<uint32_t, 3>{0, 1, 2};
+}
+
 }  // namespace
 
 DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok) const {
@@ -121,15 +163,7 @@ DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok
     const Vec3 p(window[0][0] * scale_, window[0][1] * scale_, window[0][2]);
     const Vec3 u(window[1][0] * scale_ - p[0], window[1][1] * scale_ - p[1], window[1][2] - p[2]);
     const Vec3 v(window[2][0] * scale_ - p[0], window[2][1] * scale_ - p[1], window[2][2] - p[2]);
-    const Vec3 normal = u.cross(v);
-    DepthPlane plane;
-    ok = normal[2] != 0.0 && std::isfinite(normal[2]);
-    if (!ok) return plane;
-    plane.a = -normal[0] / normal[2];
-    plane.b = -normal[1] / normal[2];
-    plane.c = p[2] - plane.a * p[0] - plane.b * p[1];
-    setDepthRange(plane, window, count);
-    return plane;
+    return planeThrough(u.cross(v), p, window, count, ok);
   }
   Vec3 normal(0, 0, 0), centre(0, 0, 0);
   for (uint32_t i = 0; i < count; ++i) {
@@ -141,14 +175,7 @@ DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok
     centre += p;
   }
   centre *= 1.0 / count;
-  DepthPlane plane;
-  ok = normal[2] != 0.0 && std::isfinite(normal[2]);
-  if (!ok) return plane;
-  plane.a = -normal[0] / normal[2];
-  plane.b = -normal[1] / normal[2];
-  plane.c = centre[2] - plane.a * centre[0] - plane.b * centre[1];
-  setDepthRange(plane, window, count);
-  return plane;
+  return planeThrough(normal, centre, window, count, ok);
 }
 
 void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, uint32_t n,
@@ -231,22 +258,9 @@ void FaceTransformer::appendTriangle(uint32_t faceId, const Vertex* const* corne
     counters.degenerate += 1;
     return;
   }
-  ScreenFace face;
-  face.id = faceId;
-  face.firstVertex = uint32_t(out.vertices.size());
-  face.vertexCount = 3;
-  face.firstTriangle = uint32_t(out.triangles.size());
-  face.triangleCount = 1;
-  face.plane = plane;
-  face.frontFacing = frontFacing;
-  out.vertices.push_back(a);
-  out.vertices.push_back(b);
-  out.vertices.push_back(c);
-  if (frontFacing)
-    out.triangles.push_back(ScreenTriangle{{a, c, b}, uint32_t(out.faces.size()), faceId, plane});
-  else
-    out.triangles.push_back(ScreenTriangle{{a, b, c}, uint32_t(out.faces.size()), faceId, plane});
-  out.faces.push_back(face);
+  const FixedPoint points[3] = {a, b, c};
+  const std::array<uint32_t, 3> piece = orientedPiece(frontFacing);
+  pushFace(faceId, plane, frontFacing, points, 3, &piece, 1, out);
 }
 
 void FaceTransformer::appendClippedFace(uint32_t faceId, const Vertex* const* corners, uint32_t n,
@@ -329,28 +343,15 @@ void FaceTransformer::appendSnappedFace(uint32_t faceId, const DepthPlane& plane
   }
   pieces_.clear();
   if (snapped_.size() == 3) {
-    pieces_.push_back(frontFacing ? std::array<uint32_t, 3>{0, 2, 1}
-                                  : std::array<uint32_t, 3>{0, 1, 2});
+    pieces_.push_back(orientedPiece(frontFacing));
   } else if (!triangulatePolygon(snapped_.data(), uint32_t(snapped_.size()), pieces_, ring_) ||
              pieces_.empty()) {
     counters.degenerate += pieces;
     return;
   }
 
-  ScreenFace face;
-  face.id = faceId;
-  face.firstVertex = uint32_t(out.vertices.size());
-  face.vertexCount = uint32_t(snapped_.size());
-  face.firstTriangle = uint32_t(out.triangles.size());
-  face.triangleCount = uint32_t(pieces_.size());
-  face.plane = plane;
-  face.frontFacing = frontFacing;
-  const uint32_t faceIndex = uint32_t(out.faces.size());
-  out.vertices.insert(out.vertices.end(), snapped_.begin(), snapped_.end());
-  for (const auto& t : pieces_)
-    out.triangles.push_back(
-        ScreenTriangle{{snapped_[t[0]], snapped_[t[1]], snapped_[t[2]]}, faceIndex, faceId, plane});
-  out.faces.push_back(face);
+  pushFace(faceId, plane, frontFacing, snapped_.data(), uint32_t(snapped_.size()), pieces_.data(),
+           uint32_t(pieces_.size()), out);
 }
 
 }  // namespace zrender

@@ -20,14 +20,14 @@ namespace zrender {
 
 namespace fs = std::filesystem;
 
-namespace {
-
 std::string lowerExtension(const fs::path& path) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   return ext;
 }
+
+namespace {
 
 // The plugin's entry points, resolved once on first use and never changed afterwards.
 struct CodecPlugin {

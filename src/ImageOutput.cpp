@@ -15,13 +15,6 @@ namespace zrender {
 
 namespace {
 
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 // The nearest of a pixel's samples (its smallest key).
 DepthKey pixelKey(const FrameBuffer& fb, int scale, int x, int y) {
   if (scale == 1) return fb.row(y)[x];

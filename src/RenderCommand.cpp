@@ -22,8 +22,8 @@ namespace fs = std::filesystem;
 namespace {
 
 bool isVideo(const fs::path& p) {
-  const std::string ext = p.extension().string();
-  return ext == ".mp4" || ext == ".avi" || ext == ".MP4" || ext == ".AVI";
+  const std::string ext = lowerExtension(p);
+  return ext == ".mp4" || ext == ".avi";
 }
 
 // A turntable's -o pattern must hold exactly one integer directive (%d, %03d, ...) so that
@@ -162,9 +162,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     }
     if (options.contactSheet) sheetFrames.push_back(renderer.color().clone());
     if (options.depth) {
-      const std::string ext = options.depth->extension().string();
       writeImageAtomically(*options.depth, depthImage(renderer.buffer(), renderer.sampleScale(),
-                                                      ext == ".png" || ext == ".PNG"));
+                                                      lowerExtension(*options.depth) == ".png"));
     }
     if (options.ids)
       writeImageAtomically(*options.ids, idImage(renderer.buffer(), renderer.sampleScale()));

@@ -14,6 +14,9 @@
 
 namespace zrender {
 
+// The extension of `path` in lower case (".png" for "X.PNG"); formats are chosen by it.
+std::string lowerExtension(const std::filesystem::path& path);
+
 // Encodes `image` (CV_8UC1, CV_8UC3 BGR, CV_16UC1, or CV_32FC1 for .tif/.exr) into `path`, the
 // format chosen by the extension. Returns false and sets `error` on failure.
 bool encodeImageFile(const std::filesystem::path& path, const cv::Mat& image, std::string& error);
