@@ -6,13 +6,8 @@
 // found (fuzz/corpus/*), in process.
 
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -44,51 +39,16 @@ constexpr double kSlowdown = 1.0;
 // What "a few seconds" means for one run of a small case.
 constexpr double kQuickSeconds = 5.0;
 
-struct Outcome : RunResult {
-  double seconds = 0.0;  // wall time
-};
+using Outcome = RunResult;
 
-// Like test::runZrender, with two limits test::runZrender cannot set: an alarm that kills a
-// hanging run (it survives exec), and optionally a file size limit so that writing the output
-// fails part way (SIGXFSZ ignored: write() then fails with EFBIG).
+// test::runZrender with an alarm that kills a hanging run, scaled for sanitizer builds, and
+// optionally a file size limit so that writing the output fails part way.
 Outcome run(const std::vector<std::string>& args, const std::string& dir,
-            double timeoutSeconds = 60, rlim_t fileSizeLimit = RLIM_INFINITY) {
-  TempDir capture;
-  const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid == 0) {
-    if (chdir(dir.c_str()) != 0) _exit(127);
-    if (!freopen(outPath.c_str(), "w", stdout) || !freopen(errPath.c_str(), "w", stderr)) {
-      _exit(127);
-    }
-    if (fileSizeLimit != RLIM_INFINITY) {
-      signal(SIGXFSZ, SIG_IGN);
-      const rlimit limit{fileSizeLimit, fileSizeLimit};
-      if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(127);
-    }
-    alarm(unsigned(timeoutSeconds * kSlowdown) + 1);
-    std::vector<char*> argv;
-    std::string binary = ZRENDER_BINARY;
-    argv.push_back(binary.data());
-    std::vector<std::string> copy = args;
-    for (std::string& a : copy) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(binary.c_str(), argv.data());
-    _exit(127);
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  Outcome r;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  std::ifstream out(outPath, std::ios::binary), err(errPath, std::ios::binary);
-  std::stringstream o, e;
-  o << out.rdbuf();
-  e << err.rdbuf();
-  r.out = o.str();
-  r.err = e.str();
-  return r;
+            double timeoutSeconds = 60, unsigned long fileSizeLimit = 0) {
+  test::RunLimits limits;
+  limits.alarmSeconds = unsigned(timeoutSeconds * kSlowdown) + 1;
+  limits.fileSizeLimit = fileSizeLimit;
+  return test::runZrender(args, dir, limits);
 }
 
 std::string readFile(const std::string& path) {

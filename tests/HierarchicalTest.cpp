@@ -25,11 +25,7 @@ namespace {
 
 const std::vector<std::string> kAlgorithms = {"hierarchical", "octree"};
 
-size_t coveredSamples(const FrameBuffer& fb) {
-  size_t n = 0;
-  for (size_t i = 0; i < fb.size(); ++i) n += fb.data()[i] != kClearKey;
-  return n;
-}
+using test::coveredSamples;
 
 struct Compared {
   size_t covered = 0;              // samples zbuffer covered

@@ -23,11 +23,7 @@ namespace {
 
 const std::vector<std::string> kAlgorithms = {"scanline", "interval"};
 
-size_t coveredSamples(const FrameBuffer& fb) {
-  size_t n = 0;
-  for (size_t i = 0; i < fb.size(); ++i) n += fb.data()[i] != kClearKey;
-  return n;
-}
+using test::coveredSamples;
 
 // Renders `scene` with zbuffer and both scan-line algorithms; keys and colors must be equal.
 // Returns the number of samples zbuffer covered (so callers can check the test saw something).

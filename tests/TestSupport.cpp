@@ -1,9 +1,12 @@
 #include "TestSupport.hpp"
 
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -93,14 +96,22 @@ std::string readAll(const std::string& path) {
 
 }  // namespace
 
-RunResult runZrender(const std::vector<std::string>& args, const std::string& dir) {
+RunResult runZrender(const std::vector<std::string>& args, const std::string& dir,
+                     const RunLimits& limits) {
   TempDir capture;
   const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
+  const auto start = std::chrono::steady_clock::now();
   const pid_t pid = fork();
   if (pid == 0) {
     if (chdir(dir.empty() ? ZRENDER_SOURCE_DIR : dir.c_str()) != 0) _exit(127);
     if (!freopen(outPath.c_str(), "w", stdout) || !freopen(errPath.c_str(), "w", stderr))
       _exit(127);
+    if (limits.fileSizeLimit) {
+      signal(SIGXFSZ, SIG_IGN);  // so that write() fails with EFBIG instead of killing
+      const rlimit limit{limits.fileSizeLimit, limits.fileSizeLimit};
+      if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(127);
+    }
+    if (limits.alarmSeconds) alarm(limits.alarmSeconds);  // survives exec
     std::vector<char*> argv;
     std::string binary = ZRENDER_BINARY;
     argv.push_back(binary.data());
@@ -113,6 +124,7 @@ RunResult runZrender(const std::vector<std::string>& args, const std::string& di
   int status = 0;
   waitpid(pid, &status, 0);
   RunResult r;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   r.out = readAll(outPath);
   r.err = readAll(errPath);
@@ -136,6 +148,12 @@ std::string TempDir::write(const std::string& name, const std::string& text) con
   const std::string p = file(name);
   std::ofstream(p, std::ios::binary) << text;
   return p;
+}
+
+size_t coveredSamples(const FrameBuffer& fb) {
+  size_t n = 0;
+  for (size_t i = 0; i < fb.size(); ++i) n += fb.data()[i] != kClearKey;
+  return n;
 }
 
 size_t countDifferences(const FrameBuffer& a, const FrameBuffer& b) {

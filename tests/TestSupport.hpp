@@ -50,13 +50,22 @@ SceneSettings projectScene(const std::string& name);
 
 // Result of running the zrender executable.
 struct RunResult {
-  int status = -1;       // exit status
+  int status = -1;       // exit status (128 + signal when killed)
   std::string out, err;  // standard output and error
+  double seconds = 0.0;  // wall time
+};
+
+// Limits put on the child process.
+struct RunLimits {
+  unsigned alarmSeconds = 0;  // SIGALRM kills a run still going after this long; 0: none
+  // Largest file the run may write, bytes (writes past it fail with EFBIG); 0: no limit.
+  unsigned long fileSizeLimit = 0;
 };
 
 // Runs the built zrender with `args` (each one argument, no shell quoting needed) in the
 // working directory `dir` (the project's folder when empty).
-RunResult runZrender(const std::vector<std::string>& args, const std::string& dir = "");
+RunResult runZrender(const std::vector<std::string>& args, const std::string& dir = "",
+                     const RunLimits& limits = RunLimits());
 
 // A fresh empty folder under the system temp folder, removed by the destructor.
 struct TempDir {
@@ -69,6 +78,9 @@ struct TempDir {
   // Writes `text` to `name` inside the folder and returns its path.
   std::string write(const std::string& name, const std::string& text) const;
 };
+
+// Number of samples some face covers.
+size_t coveredSamples(const FrameBuffer& fb);
 
 // Number of samples whose keys differ.
 size_t countDifferences(const FrameBuffer& a, const FrameBuffer& b);
