@@ -31,14 +31,7 @@ size_t expectSameAsZBuffer(const Scene& scene, const std::string& what) {
   const test::Rendered ref = test::render(scene, "zbuffer");
   for (const std::string& alg : kAlgorithms) {
     const test::Rendered r = test::render(scene, alg);
-    EXPECT_EQ(test::countDifferences(ref.buffer, r.buffer), 0u) << alg << " keys, " << what;
-    EXPECT_EQ(ref.color.size(), r.color.size()) << alg << ", " << what;
-    EXPECT_EQ(ref.color.type(), r.color.type()) << alg << ", " << what;
-    if (ref.color.size() == r.color.size() && ref.color.type() == r.color.type()) {
-      cv::Mat diff;
-      cv::absdiff(ref.color, r.color, diff);
-      EXPECT_EQ(cv::countNonZero(diff.reshape(1)), 0) << alg << " color, " << what;
-    }
+    test::expectSameFrame(ref, r, alg + ", " + what);
   }
   return coveredSamples(ref.buffer);
 }

@@ -1,5 +1,7 @@
 #include "TestSupport.hpp"
 
+#include <gtest/gtest.h>
+
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -148,6 +150,17 @@ std::string TempDir::write(const std::string& name, const std::string& text) con
   const std::string p = file(name);
   std::ofstream(p, std::ios::binary) << text;
   return p;
+}
+
+void expectSameFrame(const Rendered& ref, const Rendered& r, const std::string& label) {
+  EXPECT_EQ(countDifferences(ref.buffer, r.buffer), 0u) << label << ": keys";
+  EXPECT_EQ(ref.color.size(), r.color.size()) << label;
+  EXPECT_EQ(ref.color.type(), r.color.type()) << label;
+  if (ref.color.size() == r.color.size() && ref.color.type() == r.color.type()) {
+    cv::Mat diff;
+    cv::absdiff(ref.color, r.color, diff);
+    EXPECT_EQ(cv::countNonZero(diff.reshape(1)), 0) << label << ": color";
+  }
 }
 
 size_t coveredSamples(const FrameBuffer& fb) {

@@ -79,6 +79,10 @@ struct TempDir {
   std::string write(const std::string& name, const std::string& text) const;
 };
 
+// GoogleTest expectations that `r` equals the reference `ref` bit for bit: keys (depth and
+// face ids) and colors; `label` names the case in failures.
+void expectSameFrame(const Rendered& ref, const Rendered& r, const std::string& label);
+
 // Number of samples some face covers.
 size_t coveredSamples(const FrameBuffer& fb);
 
