@@ -24,15 +24,11 @@ Camera makeCamera(const Scene& scene) {
 
   if (s.fit) {
     const Vec3 dir = cv::normalize(cam.target - cam.eye);
-    const double r = std::max(scene.boundsRadius, 1e-9) * 1.05;  // 5% margin
-    const double halfY = s.fovy * CV_PI / 360.0;
-    const double halfX = std::atan(std::tan(halfY) * cam.aspect);
-    const double half = std::min(halfY, halfX);
-    const double distance = r / std::sin(half);
+    const FitView fit = fitView(std::max(scene.boundsRadius, 1e-9), s.fovy, cam.aspect);
     cam.target = scene.boundsCentre;
-    cam.eye = cam.target - dir * distance;
-    cam.near = std::max(distance - r, distance * 1e-3);
-    cam.far = distance + r;
+    cam.eye = cam.target - dir * fit.distance;
+    cam.near = fit.near;
+    cam.far = fit.far;
   }
   cam.view = lookAt(cam.eye, cam.target, cam.up);
   cam.projection = perspective(cam.fovy, cam.aspect, cam.near, cam.far);

@@ -479,11 +479,13 @@ void validateScene(const SceneSettings& scene, const std::string& where) {
   {
     // Extreme finite values can still overflow the projection (2 far near / (near - far) once
     // far near passes 1e308, 1 / tan of a denormal fovy), and a non-finite camera would draw
-    // nothing. fit replaces near and far (makeCamera checks its own), but keeps fovy and aspect,
-    // so those are checked with a harmless near and far.
+    // nothing. fit replaces near and far by the ones that frame the model; fovy and aspect
+    // are checked with those of a unit model (a bigger model's own overflow is makeCamera's to
+    // report, naming the model).
     const double aspect =
         scene.aspect > 0.0 ? scene.aspect : double(scene.width) / double(scene.height);
-    const double near = scene.fit ? 1.0 : scene.near, far = scene.fit ? 2.0 : scene.far;
+    const FitView unit = fitView(1.0, scene.fovy, aspect);
+    const double near = scene.fit ? unit.near : scene.near, far = scene.fit ? unit.far : scene.far;
     const Mat4 projection = perspective(scene.fovy, aspect, near, far);
     for (int i = 0; i < 16; ++i) {
       if (!std::isfinite(projection.val[i])) {

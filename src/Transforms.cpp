@@ -1,5 +1,6 @@
 #include "zrender/Transforms.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace zrender {
@@ -36,6 +37,14 @@ Mat4 perspective(double fovyDegrees, double aspect, double near, double far) {
               0.0, f, 0.0, 0.0,                                                        //
               0.0, 0.0, (far + near) / (near - far), 2.0 * far * near / (near - far),  //
               0.0, 0.0, -1.0, 0.0);
+}
+
+FitView fitView(double radius, double fovyDegrees, double aspect) {
+  const double r = radius * 1.05;  // 5% margin
+  const double halfY = fovyDegrees * CV_PI / 360.0;
+  const double halfX = std::atan(std::tan(halfY) * aspect);
+  const double distance = r / std::sin(std::min(halfY, halfX));
+  return FitView{distance, std::max(distance - r, distance * 1e-3), distance + r};
 }
 
 Vec3 clipToWindow(const Vec4& clip, int width, int height) {

@@ -854,22 +854,25 @@ TEST(FuzzCorpus, ObjInputsLoadOrFailCleanly) {
 namespace zrender {
 namespace {
 
-// fuzz/corpus/settings/regression-denormal-fovy-with-fit.json: fovy 1e-320 with fit passed
-// validation (fit replaces near and far, and the projection check was skipped with fit), then
+// fuzz/corpus/settings/regression-denormal-fovy-with-fit.json and regression-tiny-fovy-with-fit
+// .json: fovy 1e-320 and 1.4e-186 with fit passed validation (fit replaces near and far), then
 // makeCamera failed naming the model instead of the settings key.
-TEST(FuzzRegression, DenormalFovyWithFitNamesTheProjectKey) {
-  std::ifstream in(ZRENDER_SOURCE_DIR
-                   "/fuzz/corpus/settings/regression-denormal-fovy-with-fit.json");
-  std::stringstream text;
-  text << in.rdbuf();
-  Warnings warnings;
-  const SettingsFile file = parseSettings(text.str(), "fuzz.json", warnings);
-  ASSERT_EQ(file.scenes.size(), 1u);
-  try {
-    validateScene(file.scenes.begin()->second, "fuzz.json: scene 'far'");
-    FAIL() << "validateScene accepted fovy 1e-320";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("key 'project'"), std::string::npos) << e.what();
+TEST(FuzzRegression, TinyFovyWithFitNamesTheProjectKey) {
+  for (const char* name :
+       {"regression-denormal-fovy-with-fit.json", "regression-tiny-fovy-with-fit.json"}) {
+    SCOPED_TRACE(name);
+    std::ifstream in(std::string(ZRENDER_SOURCE_DIR "/fuzz/corpus/settings/") + name);
+    std::stringstream text;
+    text << in.rdbuf();
+    Warnings warnings;
+    const SettingsFile file = parseSettings(text.str(), "fuzz.json", warnings);
+    ASSERT_EQ(file.scenes.size(), 1u);
+    try {
+      validateScene(file.scenes.begin()->second, "fuzz.json: scene 'far'");
+      ADD_FAILURE() << "validateScene accepted the tiny fovy";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("key 'project'"), std::string::npos) << e.what();
+    }
   }
 }
 
