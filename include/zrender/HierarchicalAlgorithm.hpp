@@ -39,8 +39,11 @@ inline DepthKey nearestKeyOver(const DepthPlane& plane, uint32_t faceId, int min
   // to spare (sample indices inside the image are >= 0).
   const double reach =
       std::abs(plane.a) * (maxX + 1.0) + std::abs(plane.b) * (maxY + 1.0) + std::abs(plane.c);
-  // No sample of the face is nearer than its nearest corner (DepthPlane's clamp).
-  return std::max(keyAtOrBelow(v - reach * 0x1p-49, faceId),
+  // DepthPlane clamps the depth to the face's corner range [lo, hi]: a sample just outside the
+  // exact face, where the plane has risen above hi, gets hi, so the plane's bound holds only up
+  // to hi; and no sample is nearer than lo.
+  const DepthKey planeBound = keyAtOrBelow(v - reach * 0x1p-49, faceId);
+  return std::max(std::min(planeBound, makeDepthKey(plane.maxDepth(), faceId)),
                   makeDepthKey(plane.minDepth(), faceId));
 }
 
