@@ -51,6 +51,31 @@ cv::Vec3f blinnPhong(const cv::Vec3f& base, const Vec3& n, const Vec3& toEye) {
   return c;
 }
 
+// Writes every pixel of `color` (CV_8UC3, the size of `fb`) as colorOf(key) (0x00RRGGBB).
+template <typename ColorOf>
+void shadeRows(const FrameBuffer& fb, cv::Mat& color, ColorOf colorOf) {
+  const int width = fb.width();
+  for (int y = 0; y < fb.height(); ++y) {
+    uchar* out = color.ptr<uchar>(y);
+    const DepthKey* row = fb.row(y);
+    // Four pixels (12 bytes: B, G, R each) as three separate 4-byte stores, then the rest one
+    // by one. Measured: 4-byte stores beat one 8-byte and one 4-byte store by 3x here.
+    int x = 0;
+    for (; x + 4 <= width; x += 4) {
+      const uint32_t c0 = colorOf(row[x]), c1 = colorOf(row[x + 1]);
+      const uint32_t c2 = colorOf(row[x + 2]), c3 = colorOf(row[x + 3]);
+      const uint32_t words[3] = {c0 | c1 << 24, c1 >> 8 | c2 << 16, c2 >> 16 | c3 << 8};
+      for (int i = 0; i < 3; ++i) std::memcpy(out + 3 * x + 4 * i, &words[i], 4);
+    }
+    for (; x < width; ++x) {
+      const uint32_t c = colorOf(row[x]);
+      out[3 * x + 0] = uchar(c);
+      out[3 * x + 1] = uchar(c >> 8);
+      out[3 * x + 2] = uchar(c >> 16);
+    }
+  }
+}
+
 }  // namespace
 
 uint32_t randomFaceColor(uint32_t faceId) {
@@ -293,29 +318,25 @@ void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
     // With few faces for the pixels (the bunny: 69k faces, 3.2M pixels), computing every
     // face's color in id order first is cheaper than computing them on first sight, where
     // each look-up of the face's normal is a cache miss.
-    if (size_t(scene_.faceCount()) * 16 <= fb.size())
-      for (uint32_t id = 0; id < scene_.faceCount(); ++id) faceColor(id);
-    const uint32_t frame = frame_;
-    const FaceCache* cache = cache_.data();
-    auto colorOf = [&](DepthKey key) {
-      const uint32_t id = keyFaceId(key);
-      if (id == kBackgroundId) return background;
-      const FaceCache& entry = cache[id];
-      return entry.stamp == frame ? entry.data : faceColor(id);
-    };
-    for (int y = 0; y < height; ++y) {
-      uchar* out = color.ptr<uchar>(y);
-      const DepthKey* row = fb.row(y);
-      // One 4-byte store per pixel (B, G, R and a byte the next pixel overwrites), except
-      // the last of the row, where it would spill past the image.
-      for (int x = 0; x + 1 < width; ++x) {
-        const uint32_t c = colorOf(row[x]);
-        std::memcpy(out + 3 * x, &c, 4);
-      }
-      const uint32_t c = colorOf(row[width - 1]);
-      out[3 * (width - 1) + 0] = uchar(c);
-      out[3 * (width - 1) + 1] = uchar(c >> 8);
-      out[3 * (width - 1) + 2] = uchar(c >> 16);
+    const uint32_t faceCount = scene_.faceCount();
+    const bool wholeTable = size_t(faceCount) * 16 <= fb.size();
+    if (wholeTable) {
+      // Entry 0 is the background, entry id + 1 face id's color, so that the look-up of
+      // uint32_t(key) + 1 needs no branch (the background id wraps to 0).
+      colorTable_.resize(size_t(faceCount) + 1);
+      colorTable_[0] = background;
+      for (uint32_t id = 0; id < faceCount; ++id) colorTable_[size_t(id) + 1] = faceColor(id);
+      const uint32_t* table = colorTable_.data();
+      shadeRows(fb, color, [table](DepthKey key) { return table[uint32_t(keyFaceId(key) + 1u)]; });
+    } else {
+      const uint32_t frame = frame_;
+      const FaceCache* cache = cache_.data();
+      shadeRows(fb, color, [&](DepthKey key) {
+        const uint32_t id = keyFaceId(key);
+        if (id == kBackgroundId) return background;
+        const FaceCache& entry = cache[id];
+        return entry.stamp == frame ? entry.data : faceColor(id);
+      });
     }
     return;
   }

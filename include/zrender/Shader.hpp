@@ -49,6 +49,7 @@ class Shader {
   // Per-frame state.
   uint32_t frame_ = 0;
   std::vector<FaceCache> cache_;
+  std::vector<uint32_t> colorTable_;  // [0] background, [id + 1] face color (one color per face)
   std::vector<FaceShade> faceShade_;
   std::vector<Vec3> cornerPos_, cornerNormal_;
   std::vector<cv::Vec2d> cornerUv_;
