@@ -25,14 +25,22 @@ void FaceTransformer::beginFrame(const Camera& camera) {
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
     mvp_.push_back(viewProjection * scene_.modelMatrix(k));
   if (++frame_ == 0) {  // the stamps wrapped around: forget them all
-    std::fill(vertexFrame_.begin(), vertexFrame_.end(), 0u);
+    for (VertexState& v : state_) v.frame = 0;
     frame_ = 1;
   }
 }
 
-void FaceTransformer::computeVertex(const Mat4& m, const Vec3& p, Vertex& v) const {
-  v.clip = m * Vec4(p[0], p[1], p[2], 1.0);
-  const Vec4& c = v.clip;
+Vec4 FaceTransformer::clipOf(size_t vertex) const {
+  const size_t nv = scene_.mesh->positions.size();
+  const Vec3& p = scene_.mesh->positions[vertex % nv];
+  return mvp_[vertex / nv] * Vec4(p[0], p[1], p[2], 1.0);
+}
+
+void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex) {
+  // The same product as clipOf(vertex).
+  const Vec4 c = mvp * Vec4(position[0], position[1], position[2], 1.0);
+  VertexState& v = state_[vertex];
+  v.frame = frame_;
   if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]))) {
     v.code = kNotFinite;
     return;
@@ -40,33 +48,35 @@ void FaceTransformer::computeVertex(const Mat4& m, const Vec3& p, Vertex& v) con
   v.code = (c[0] < -c[3]) | (c[0] > c[3]) << 1 | (c[1] < -c[3]) << 2 | (c[1] > c[3]) << 3 |
            (c[2] < -c[3]) << 4 | (c[2] > c[3]) << 5;
   if (v.code & (kNear | kFar)) return;
-  v.window = clipToWindow(c, width_, height_);
+  const Vec3 window = clipToWindow(c, width_, height_);
+  vertexWindow_[vertex] = window;
   const double guard = kGuardBand / scale_;
-  if (std::abs(v.window[0]) > guard || std::abs(v.window[1]) > guard) {
+  if (std::abs(window[0]) > guard || std::abs(window[1]) > guard) {
     v.code |= kGuard;
     return;
   }
   // Snap to 1/256 pixel, then scale to samples.
-  v.snapped = {snapToSubpixel(v.window[0]) * scale_, snapToSubpixel(v.window[1]) * scale_};
+  v.snapped = {snapToSubpixel(window[0]) * scale_, snapToSubpixel(window[1]) * scale_};
 }
 
 void FaceTransformer::transformAll(FrameGeometry& out) {
   const Mesh& mesh = *scene_.mesh;
   const size_t nv = mesh.positions.size();
-  vertices_.resize(nv * scene_.instanceCount());
+  const size_t total = nv * scene_.instanceCount();
+  state_.resize(total);
+  vertexWindow_.resize(total);
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
-    for (size_t v = 0; v < nv; ++v)
-      computeVertex(mvp_[k], mesh.positions[v], vertices_[size_t(k) * nv + v]);
+    for (size_t v = 0; v < nv; ++v) computeVertex(mvp_[k], mesh.positions[v], size_t(k) * nv + v);
   out.width = width_ * scale_;
   out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
-    const Vertex* base = vertices_.data() + size_t(k) * nv;
+    const uint32_t base = uint32_t(size_t(k) * nv);
     for (uint32_t f = 0; f < nf; ++f) {
       const uint32_t n = mesh.cornerCount(f);
       const Corner* c = mesh.faceCorners(f);
       corners_.resize(n);
-      for (uint32_t i = 0; i < n; ++i) corners_[i] = base + c[i].position;
+      for (uint32_t i = 0; i < n; ++i) corners_[i] = base + uint32_t(c[i].position);
       appendFace(k * nf + f, corners_.data(), n, out);
     }
   }
@@ -75,9 +85,9 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
 void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   const Mesh& mesh = *scene_.mesh;
   const size_t nv = mesh.positions.size();
-  if (vertexFrame_.size() != nv * scene_.instanceCount()) {
-    vertices_.resize(nv * scene_.instanceCount());
-    vertexFrame_.assign(nv * scene_.instanceCount(), 0u);
+  if (state_.size() != nv * scene_.instanceCount()) {
+    state_.assign(nv * scene_.instanceCount(), VertexState());
+    vertexWindow_.resize(nv * scene_.instanceCount());
   }
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
@@ -87,12 +97,10 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   const Corner* c = mesh.faceCorners(f);
   corners_.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
-    const size_t index = size_t(k) * nv + size_t(c[i].position);
-    if (vertexFrame_[index] != frame_) {
-      computeVertex(mvp_[k], mesh.positions[size_t(c[i].position)], vertices_[index]);
-      vertexFrame_[index] = frame_;
-    }
-    corners_[i] = &vertices_[index];
+    const uint32_t index = uint32_t(size_t(k) * nv + size_t(c[i].position));
+    if (state_[index].frame != frame_)
+      computeVertex(mvp_[k], mesh.positions[size_t(c[i].position)], index);
+    corners_[i] = index;
   }
   appendFace(faceId, corners_.data(), n, out);
 }
@@ -178,7 +186,7 @@ DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok
   return planeThrough(normal, centre, window, count, ok);
 }
 
-void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, uint32_t n,
+void FaceTransformer::appendFace(uint32_t faceId, const uint32_t* corners, uint32_t n,
                                  FrameGeometry& out) {
   TransformCounters& counters = out.counters;
   const uint64_t pieces = n >= 3 ? n - 2 : 1;  // counters are in triangles
@@ -188,8 +196,8 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, 
   }
   uint32_t all = ~0u, any = 0;
   for (uint32_t i = 0; i < n; ++i) {
-    all &= corners[i]->code;
-    any |= corners[i]->code;
+    all &= state_[corners[i]].code;
+    any |= state_[corners[i]].code;
   }
   if (any & kNotFinite) {
     counters.degenerate += pieces;
@@ -210,7 +218,7 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, 
   // Every corner inside near/far and the guard band, already snapped.
   snapped_.clear();
   for (uint32_t i = 0; i < n; ++i) {
-    const FixedPoint& p = corners[i]->snapped;
+    const FixedPoint& p = state_[corners[i]].snapped;
     if (snapped_.empty() || p != snapped_.back()) snapped_.push_back(p);
   }
   // Back faces are known from the snapped corners alone: decide before the plane's divisions.
@@ -222,7 +230,7 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, 
     }
   }
   window_.resize(n);
-  for (uint32_t i = 0; i < n; ++i) window_[i] = corners[i]->window;
+  for (uint32_t i = 0; i < n; ++i) window_[i] = vertexWindow_[corners[i]];
   bool ok = false;
   const DepthPlane plane = planeOf(window_.data(), n, ok);
   if (!ok) {
@@ -232,14 +240,13 @@ void FaceTransformer::appendFace(uint32_t faceId, const Vertex* const* corners, 
   appendSnappedFace(faceId, plane, pieces, out);
 }
 
-void FaceTransformer::appendTriangle(uint32_t faceId, const Vertex* const* corners,
-                                     FrameGeometry& out) {
+void FaceTransformer::appendTriangle(uint32_t faceId, const uint32_t* corners, FrameGeometry& out) {
   // The common case, kept short: a triangle inside near/far and the guard band. Same result
   // as appendSnappedFace() would give, without its scratch buffers.
   TransformCounters& counters = out.counters;
-  const FixedPoint& a = corners[0]->snapped;
-  const FixedPoint& b = corners[1]->snapped;
-  const FixedPoint& c = corners[2]->snapped;
+  const FixedPoint& a = state_[corners[0]].snapped;
+  const FixedPoint& b = state_[corners[1]].snapped;
+  const FixedPoint& c = state_[corners[2]].snapped;
   const int64_t area = orient2d(a, b, c);
   if (area == 0) {
     counters.degenerate += 1;
@@ -251,7 +258,8 @@ void FaceTransformer::appendTriangle(uint32_t faceId, const Vertex* const* corne
     counters.backfaceCulled += 1;
     return;
   }
-  const Vec3 window[3] = {corners[0]->window, corners[1]->window, corners[2]->window};
+  const Vec3 window[3] = {vertexWindow_[corners[0]], vertexWindow_[corners[1]],
+                          vertexWindow_[corners[2]]};
   bool ok = false;
   const DepthPlane plane = planeOf(window, 3, ok);
   if (!ok) {
@@ -263,14 +271,14 @@ void FaceTransformer::appendTriangle(uint32_t faceId, const Vertex* const* corne
   pushFace(faceId, plane, frontFacing, points, 3, &piece, 1, out);
 }
 
-void FaceTransformer::appendClippedFace(uint32_t faceId, const Vertex* const* corners, uint32_t n,
+void FaceTransformer::appendClippedFace(uint32_t faceId, const uint32_t* corners, uint32_t n,
                                         uint64_t pieces, FrameGeometry& out) {
   TransformCounters& counters = out.counters;
   faceClip_.resize(n);
   uint32_t any = 0;
   for (uint32_t i = 0; i < n; ++i) {
-    faceClip_[i] = corners[i]->clip;
-    any |= corners[i]->code;
+    faceClip_[i] = clipOf(corners[i]);
+    any |= state_[corners[i]].code;
   }
   const Vec4* poly = faceClip_.data();
   uint32_t count = n;

@@ -36,12 +36,14 @@ class FaceTransformer {
   int sampleScale() const { return scale_; }
 
  private:
-  // A vertex of one instance after the model-view-projection.
-  struct Vertex {
-    Vec4 clip;
-    Vec3 window;               // pixels and depth; valid when `code` has no kNeedsClip bit
-    FixedPoint snapped{0, 0};  // 1/256 sample units; valid likewise
+  // What every face using a vertex (of one instance) reads first, kept small (16 bytes) so
+  // that the whole array stays in cache: faces reach their vertices in no particular order.
+  // The window position lives apart (window_) and is read only by faces that survive culling;
+  // clip coordinates are recomputed (clipOf) by the rare faces that need clipping.
+  struct VertexState {
+    FixedPoint snapped{0, 0};  // 1/256 sample units; valid when `code` has no kNeedsClip bit
     uint32_t code = 0;         // outcode bits below
+    uint32_t frame = 0;        // lazy mode: the frame the vertex was computed in
   };
   enum : uint32_t {
     kLeft = 1,
@@ -55,12 +57,13 @@ class FaceTransformer {
   };
   static constexpr uint32_t kNeedsClip = kNear | kFar | kGuard | kNotFinite;
 
-  void computeVertex(const Mat4& mvp, const Vec3& position, Vertex& v) const;
-  void appendFace(uint32_t faceId, const Vertex* const* corners, uint32_t count,
-                  FrameGeometry& out);
-  void appendTriangle(uint32_t faceId, const Vertex* const* corners, FrameGeometry& out);
-  void appendClippedFace(uint32_t faceId, const Vertex* const* corners, uint32_t count,
-                         uint64_t pieces, FrameGeometry& out);
+  // Vertices are numbered instance-major: index = instance * positions + position.
+  Vec4 clipOf(size_t vertex) const;
+  void computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex);
+  void appendFace(uint32_t faceId, const uint32_t* corners, uint32_t count, FrameGeometry& out);
+  void appendTriangle(uint32_t faceId, const uint32_t* corners, FrameGeometry& out);
+  void appendClippedFace(uint32_t faceId, const uint32_t* corners, uint32_t count, uint64_t pieces,
+                         FrameGeometry& out);
   void appendSnappedFace(uint32_t faceId, const DepthPlane& plane, uint64_t pieces,
                          FrameGeometry& out);
   DepthPlane planeOf(const Vec3* window, uint32_t count, bool& ok) const;
@@ -69,12 +72,12 @@ class FaceTransformer {
   int width_ = 0, height_ = 0;  // pixels
   int scale_;
   bool cull_;
-  std::vector<Mat4> mvp_;              // per instance, model to clip space
-  std::vector<Vertex> vertices_;       // instance-major
-  std::vector<uint32_t> vertexFrame_;  // lazy mode: the frame vertices_[i] was computed in
+  std::vector<Mat4> mvp_;           // per instance, model to clip space
+  std::vector<VertexState> state_;  // per vertex
+  std::vector<Vec3> vertexWindow_;  // per vertex: pixels and depth; valid like `snapped`
   uint32_t frame_ = 0;
   // Scratch buffers reused face after face.
-  std::vector<const Vertex*> corners_;
+  std::vector<uint32_t> corners_;
   std::vector<Vec4> faceClip_, clipped_, clipScratch_;
   std::vector<Vec3> window_, guarded_, guardScratch_;
   std::vector<FixedPoint> snapped_;
