@@ -2,11 +2,9 @@
 
 #include <immintrin.h>
 
-namespace zrender {
+#include "zrender/CpuFeatures.hpp"
 
-bool cpuHasAvx2() {
-  return __builtin_cpu_supports("avx2");
-}
+namespace zrender {
 
 void fillTriangle(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId, FrameBuffer& fb,
                   RenderStats& stats) {

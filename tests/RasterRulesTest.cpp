@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "TestSupport.hpp"
+#include "zrender/CpuFeatures.hpp"
 #include "zrender/FrameGeometry.hpp"
 #include "zrender/RasterRules.hpp"
 #include "zrender/TriangleFill.hpp"

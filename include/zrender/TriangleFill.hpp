@@ -18,10 +18,8 @@ void fillTriangle(const TriangleSetup& s, const DepthPlane& plane, uint32_t face
 void fillTriangleScalar(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId,
                         FrameBuffer& fb, RenderStats& stats);
 
-// Four samples at a time. Call only when cpuHasAvx2().
+// Four samples at a time. Call only when cpuHasAvx2() (CpuFeatures.hpp).
 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId,
                       FrameBuffer& fb, RenderStats& stats);
-
-bool cpuHasAvx2();
 
 }  // namespace zrender
