@@ -30,10 +30,27 @@ void FaceTransformer::beginFrame(const Camera& camera) {
   }
 }
 
+void FaceTransformer::prepare() {
+  const Mesh& mesh = *scene_.mesh;
+  constexpr uint32_t kUnseen = ~0u;
+  std::vector<uint32_t> slotOf(mesh.positions.size(), kUnseen);
+  slotPositions_.clear();
+  cornerSlots_.resize(mesh.corners.size());
+  for (size_t i = 0; i < mesh.corners.size(); ++i) {
+    const size_t position = size_t(mesh.corners[i].position);
+    if (slotOf[position] == kUnseen) {
+      slotOf[position] = uint32_t(slotPositions_.size());
+      slotPositions_.push_back(mesh.positions[position]);
+    }
+    cornerSlots_[i] = slotOf[position];
+  }
+  prepared_ = true;
+}
+
 Vec4 FaceTransformer::clipOf(size_t vertex) const {
-  const size_t nv = scene_.mesh->positions.size();
-  const Vec3& p = scene_.mesh->positions[vertex % nv];
-  return mvp_[vertex / nv] * Vec4(p[0], p[1], p[2], 1.0);
+  const size_t slots = slotPositions_.size();
+  const Vec3& p = slotPositions_[vertex % slots];
+  return mvp_[vertex / slots] * Vec4(p[0], p[1], p[2], 1.0);
 }
 
 void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex) {
@@ -60,46 +77,47 @@ void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_
 }
 
 void FaceTransformer::transformAll(FrameGeometry& out) {
+  if (!prepared_) prepare();
   const Mesh& mesh = *scene_.mesh;
-  const size_t nv = mesh.positions.size();
-  const size_t total = nv * scene_.instanceCount();
+  const size_t slots = slotPositions_.size();
+  const size_t total = slots * scene_.instanceCount();
   state_.resize(total);
   vertexWindow_.resize(total);
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
-    for (size_t v = 0; v < nv; ++v) computeVertex(mvp_[k], mesh.positions[v], size_t(k) * nv + v);
+    for (size_t v = 0; v < slots; ++v) computeVertex(mvp_[k], slotPositions_[v], k * slots + v);
   out.width = width_ * scale_;
   out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
-    const uint32_t base = uint32_t(size_t(k) * nv);
+    const uint32_t base = uint32_t(k * slots);
     for (uint32_t f = 0; f < nf; ++f) {
       const uint32_t n = mesh.cornerCount(f);
-      const Corner* c = mesh.faceCorners(f);
+      const uint32_t* slot = cornerSlots_.data() + mesh.faceStart[f];
       corners_.resize(n);
-      for (uint32_t i = 0; i < n; ++i) corners_[i] = base + uint32_t(c[i].position);
+      for (uint32_t i = 0; i < n; ++i) corners_[i] = base + slot[i];
       appendFace(k * nf + f, corners_.data(), n, out);
     }
   }
 }
 
 void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
+  if (!prepared_) prepare();
   const Mesh& mesh = *scene_.mesh;
-  const size_t nv = mesh.positions.size();
-  if (state_.size() != nv * scene_.instanceCount()) {
-    state_.assign(nv * scene_.instanceCount(), VertexState());
-    vertexWindow_.resize(nv * scene_.instanceCount());
+  const size_t slots = slotPositions_.size();
+  if (state_.size() != slots * scene_.instanceCount()) {
+    state_.assign(slots * scene_.instanceCount(), VertexState());
+    vertexWindow_.resize(slots * scene_.instanceCount());
   }
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
   out.width = width_ * scale_;
   out.height = height_ * scale_;
   const uint32_t n = mesh.cornerCount(f);
-  const Corner* c = mesh.faceCorners(f);
+  const uint32_t* slot = cornerSlots_.data() + mesh.faceStart[f];
   corners_.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t index = uint32_t(size_t(k) * nv + size_t(c[i].position));
-    if (state_[index].frame != frame_)
-      computeVertex(mvp_[k], mesh.positions[size_t(c[i].position)], index);
+    const uint32_t index = uint32_t(k * slots + slot[i]);
+    if (state_[index].frame != frame_) computeVertex(mvp_[k], slotPositions_[slot[i]], index);
     corners_[i] = index;
   }
   appendFace(faceId, corners_.data(), n, out);

@@ -19,6 +19,12 @@ class FaceTransformer {
   // The same, ready for one frame seen by `camera`.
   FaceTransformer(const Scene& scene, const Camera& camera, int sampleScale, bool cull);
 
+  // Model-only set-up (done on first use if not called): the vertices in the order faces first
+  // use them. Nothing drawn depends on that order, but faces read their vertices by it: in
+  // first-use order consecutive faces find theirs in cache (scanned models such as the bunny
+  // list vertices in an order unrelated to their faces).
+  void prepare();
+
   // Takes the frame's camera and forgets the vertices of the previous frame. The per-vertex
   // storage is kept from frame to frame: for a model of millions of vertices, allocating and
   // initialising it again per frame cost more than the lazy transform saves.
@@ -57,7 +63,7 @@ class FaceTransformer {
   };
   static constexpr uint32_t kNeedsClip = kNear | kFar | kGuard | kNotFinite;
 
-  // Vertices are numbered instance-major: index = instance * positions + position.
+  // Vertices are numbered instance-major: index = instance * slots + slot.
   Vec4 clipOf(size_t vertex) const;
   void computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex);
   void appendFace(uint32_t faceId, const uint32_t* corners, uint32_t count, FrameGeometry& out);
@@ -72,9 +78,12 @@ class FaceTransformer {
   int width_ = 0, height_ = 0;  // pixels
   int scale_;
   bool cull_;
-  std::vector<Mat4> mvp_;           // per instance, model to clip space
-  std::vector<VertexState> state_;  // per vertex
-  std::vector<Vec3> vertexWindow_;  // per vertex: pixels and depth; valid like `snapped`
+  std::vector<Mat4> mvp_;  // per instance, model to clip space
+  bool prepared_ = false;
+  std::vector<Vec3> slotPositions_;    // model space: the positions faces use, by first use
+  std::vector<uint32_t> cornerSlots_;  // per mesh corner: its position's slot
+  std::vector<VertexState> state_;     // per vertex
+  std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth; valid like `snapped`
   uint32_t frame_ = 0;
   // Scratch buffers reused face after face.
   std::vector<uint32_t> corners_;
