@@ -40,7 +40,16 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
   const std::vector<ScreenTriangle>& triangles =
       bands_.sort(input.geometry, fb.width(), fb.height());
   rasterizer_.begin(fb);
-  for (const ScreenTriangle& t : triangles) rasterizer_.drawTriangle(t, stats);
+  for (int band = 0; band < bands_.bandCount(); ++band) {
+    // No later triangle starts above this band: the rows above it are final.
+    const int bandTop = band << TriangleBands::kBandShift;
+    if (bandTop > 0) {
+      rasterizer_.finishRows(bandTop);
+      input.rowsFinal(bandTop);
+    }
+    for (uint32_t i = bands_.bandStart(band); i < bands_.bandStart(band + 1); ++i)
+      rasterizer_.drawTriangle(triangles[i], stats);
+  }
   rasterizer_.finish();
 }
 

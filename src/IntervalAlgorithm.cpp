@@ -103,6 +103,7 @@ void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
     }
     activeEdges_.resize(m);
     activePolygons -= tables_.polygonsEnding[size_t(y)];
+    input.rowFinished(y);
   }
 
   // No per-sample depth test: every covered sample is decided and written exactly once.

@@ -50,9 +50,11 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
   const double t1 = nowMs();
 
   buffer_.resize(geometry_.width, geometry_.height);
-  FrameInput input{scene_, camera, transformer_, geometry_};
+  shader_.begin(buffer_, camera, sampleScale_, color_);
+  FrameInput input{scene_, camera, transformer_, geometry_,
+                   [this](int rows) { shader_.rowsFinal(rows); }};
   algorithm_->render(input, buffer_, stats_);
-  shader_.shade(buffer_, camera, sampleScale_, color_);
+  shader_.finish();
   const double t2 = nowMs();
 
   // Lazy algorithms transform inside render(); book that time as transform.

@@ -89,6 +89,7 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
     } else {
       std::fill(out, out + width, kClearKey);
     }
+    input.rowFinished(y);
   }
 
   // pixelsWritten counts one-row buffer writes; a sample can be overwritten by nearer faces.

@@ -51,14 +51,16 @@ cv::Vec3f blinnPhong(const cv::Vec3f& base, const Vec3& n, const Vec3& toEye) {
   return c;
 }
 
-// Writes every pixel of `color` (CV_8UC3, the size of `fb`) as colorOf(key) (0x00RRGGBB).
+// Writes the pixels of rows [firstRow, endRow) of `color` (CV_8UC3, the size of `fb`) as
+// colorOf(key) (0x00RRGGBB).
 template <typename ColorOf>
-void shadeRows(const FrameBuffer& fb, uint32_t background, cv::Mat& color, ColorOf colorOf) {
+void shadeRows(const FrameBuffer& fb, int firstRow, int endRow, uint32_t background, cv::Mat& color,
+               ColorOf colorOf) {
   const int width = fb.width();
   const uint32_t backgroundWords[3] = {background | background << 24,
                                        background >> 8 | background << 16,
                                        background >> 16 | background << 8};
-  for (int y = 0; y < fb.height(); ++y) {
+  for (int y = firstRow; y < endRow; ++y) {
     uchar* out = color.ptr<uchar>(y);
     const DepthKey* row = fb.row(y);
     // Four pixels (12 bytes: B, G, R each) as three separate 4-byte stores, then the rest one
@@ -273,9 +275,12 @@ cv::Vec3b Shader::shadeSample(uint32_t faceId, const Vec3& dir) {
   return cv::Vec3b(q(rgb[2]), q(rgb[1]), q(rgb[0]));
 }
 
-void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
-  const int width = fb.width() / scale, height = fb.height() / scale;
-  color.create(height, width, CV_8UC3);
+void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
+  fb_ = &fb;
+  color_ = &color;
+  scale_ = scale;
+  shadedRows_ = 0;
+  color.create(fb.height() / scale, fb.width() / scale, CV_8UC3);
   if (cache_.size() != scene_.faceCount()) {
     cache_.assign(scene_.faceCount(), FaceCache());
     frame_ = 0;
@@ -290,71 +295,98 @@ void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
     modelView_.push_back(camera.view * scene_.modelMatrix(k));
 
   const auto& bg = scene_.settings.background;
-  const uint32_t background = (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
-
-  float depthLo = 1.0f, depthHi = 0.0f;
-  if (mode_ == ShadingMode::Depth) {
-    for (size_t i = 0; i < fb.size(); ++i) {
-      if (keyFaceId(fb.data()[i]) == kBackgroundId) continue;
-      const float d = keyDepth(fb.data()[i]);
-      depthLo = std::min(depthLo, d);
-      depthHi = std::max(depthHi, d);
-    }
-  }
-  const double depthRange = depthHi > depthLo ? double(depthHi) - depthLo : 1.0;
+  background_ = (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
 
   // View-space ray through a sample centre: x_view / -z_view = x_ndc / P00.
-  const double sx = 2.0 / fb.width() / camera.projection(0, 0);
-  const double sy = 2.0 / fb.height() / camera.projection(1, 1);
-  const double ox = -1.0 / camera.projection(0, 0), oy = 1.0 / camera.projection(1, 1);
+  rayScaleX_ = 2.0 / fb.width() / camera.projection(0, 0);
+  rayScaleY_ = 2.0 / fb.height() / camera.projection(1, 1);
+  rayOriginX_ = -1.0 / camera.projection(0, 0);
+  rayOriginY_ = 1.0 / camera.projection(1, 1);
 
-  // Color of one sample as 0x00RRGGBB.
-  auto sampleColor = [&](DepthKey key, int x, int y) -> uint32_t {
-    const uint32_t id = keyFaceId(key);
-    if (id == kBackgroundId) return background;
-    if (mode_ == ShadingMode::Depth) {
-      // Near white, far black, stretched over the depths present in the frame.
-      const double g = 1.0 - (double(keyDepth(key)) - depthLo) / depthRange;
-      return packRgb(g, g, g);
-    }
-    if (!perSample_) return faceColor(id);
-    const Vec3 dir(ox + (x + 0.5) * sx, oy - (y + 0.5) * sy, -1.0);
-    const cv::Vec3b c = shadeSample(id, dir);
-    return (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0];
-  };
+  // The common case (one sample per pixel, one color per face) is a table look-up per pixel.
+  // With few faces for the pixels (the bunny: 69k faces, 3.2M pixels), computing every face's
+  // color in id order first is cheaper than computing them on first sight, where each look-up
+  // of the face's normal is a cache miss.
+  const bool perFace = scale == 1 && !perSample_ && mode_ != ShadingMode::Depth;
+  wholeTable_ = perFace && size_t(scene_.faceCount()) * 16 <= fb.size();
+  if (wholeTable_) {
+    // Entry 0 is the background, entry id + 1 face id's color, so that the look-up of
+    // uint32_t(key) + 1 needs no branch (the background id wraps to 0).
+    colorTable_.resize(size_t(scene_.faceCount()) + 1);
+    colorTable_[0] = background_;
+    for (uint32_t id = 0; id < scene_.faceCount(); ++id)
+      colorTable_[size_t(id) + 1] = faceColor(id);
+  }
+}
 
-  if (scale == 1 && !perSample_ && mode_ != ShadingMode::Depth) {
-    // The common case (one sample per pixel, one color per face): a table look-up per pixel.
-    // With few faces for the pixels (the bunny: 69k faces, 3.2M pixels), computing every
-    // face's color in id order first is cheaper than computing them on first sight, where
-    // each look-up of the face's normal is a cache miss.
-    const uint32_t faceCount = scene_.faceCount();
-    const bool wholeTable = size_t(faceCount) * 16 <= fb.size();
-    if (wholeTable) {
-      // Entry 0 is the background, entry id + 1 face id's color, so that the look-up of
-      // uint32_t(key) + 1 needs no branch (the background id wraps to 0).
-      colorTable_.resize(size_t(faceCount) + 1);
-      colorTable_[0] = background;
-      for (uint32_t id = 0; id < faceCount; ++id) colorTable_[size_t(id) + 1] = faceColor(id);
-      const uint32_t* table = colorTable_.data();
-      shadeRows(fb, background, color,
-                [table](DepthKey key) { return table[uint32_t(keyFaceId(key) + 1u)]; });
-    } else {
-      const uint32_t frame = frame_;
-      const FaceCache* cache = cache_.data();
-      shadeRows(fb, background, color, [&](DepthKey key) {
-        const uint32_t id = keyFaceId(key);
-        if (id == kBackgroundId) return background;
-        const FaceCache& entry = cache[id];
-        return entry.stamp == frame ? entry.data : faceColor(id);
-      });
+void Shader::rowsFinal(int sampleRows) {
+  // Depth mode stretches over the depths of the whole frame: it waits for finish().
+  if (mode_ == ShadingMode::Depth) return;
+  shadePixelRows(std::min(sampleRows / scale_, color_->rows));
+}
+
+void Shader::finish() {
+  if (mode_ == ShadingMode::Depth) {
+    depthLo_ = 1.0f;
+    float depthHi = 0.0f;
+    for (size_t i = 0; i < fb_->size(); ++i) {
+      if (keyFaceId(fb_->data()[i]) == kBackgroundId) continue;
+      const float d = keyDepth(fb_->data()[i]);
+      depthLo_ = std::min(depthLo_, d);
+      depthHi = std::max(depthHi, d);
     }
+    depthRange_ = depthHi > depthLo_ ? double(depthHi) - depthLo_ : 1.0;
+  }
+  shadePixelRows(color_->rows);
+}
+
+void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
+  begin(fb, camera, scale, color);
+  finish();
+}
+
+uint32_t Shader::sampleColor(DepthKey key, int x, int y) {
+  const uint32_t id = keyFaceId(key);
+  if (id == kBackgroundId) return background_;
+  if (mode_ == ShadingMode::Depth) {
+    // Near white, far black, stretched over the depths present in the frame.
+    const double g = 1.0 - (double(keyDepth(key)) - depthLo_) / depthRange_;
+    return packRgb(g, g, g);
+  }
+  if (!perSample_) return faceColor(id);
+  const Vec3 dir(rayOriginX_ + (x + 0.5) * rayScaleX_, rayOriginY_ - (y + 0.5) * rayScaleY_, -1.0);
+  const cv::Vec3b c = shadeSample(id, dir);
+  return (uint32_t(c[2]) << 16) | (uint32_t(c[1]) << 8) | c[0];
+}
+
+void Shader::shadePixelRows(int endRow) {
+  const int firstRow = shadedRows_;
+  if (endRow <= firstRow) return;
+  shadedRows_ = endRow;
+  const FrameBuffer& fb = *fb_;
+  cv::Mat& color = *color_;
+  if (wholeTable_) {
+    const uint32_t* table = colorTable_.data();
+    shadeRows(fb, firstRow, endRow, background_, color,
+              [table](DepthKey key) { return table[uint32_t(keyFaceId(key) + 1u)]; });
+    return;
+  }
+  if (scale_ == 1 && !perSample_ && mode_ != ShadingMode::Depth) {
+    const uint32_t background = background_, frame = frame_;
+    const FaceCache* cache = cache_.data();
+    shadeRows(fb, firstRow, endRow, background, color, [&](DepthKey key) {
+      const uint32_t id = keyFaceId(key);
+      if (id == kBackgroundId) return background;
+      const FaceCache& entry = cache[id];
+      return entry.stamp == frame ? entry.data : faceColor(id);
+    });
     return;
   }
 
-  for (int y = 0; y < height; ++y) {
+  const int width = color.cols;
+  for (int y = firstRow; y < endRow; ++y) {
     uchar* out = color.ptr<uchar>(y);
-    if (scale == 1) {
+    if (scale_ == 1) {
       const DepthKey* row = fb.row(y);
       for (int x = 0; x < width; ++x) {
         const uint32_t c = sampleColor(row[x], x, y);

@@ -19,11 +19,20 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     clearedRows = lastRow + 1;
   };
   TriangleSetup setup;
-  for (const ScreenTriangle& t : triangles) {
-    if (!setup.setup(t.v, width, height)) continue;
-    clearRowsUpTo(setup.maxY);
-    ++stats.trianglesRasterized;
-    fillTriangle(setup, t.plane, t.id, fb, stats);
+  for (int band = 0; band < bands_.bandCount(); ++band) {
+    // No later triangle starts above this band: the rows above it are final.
+    const int bandTop = band << TriangleBands::kBandShift;
+    if (bandTop > 0) {
+      clearRowsUpTo(bandTop - 1);
+      input.rowsFinal(bandTop);
+    }
+    for (uint32_t i = bands_.bandStart(band); i < bands_.bandStart(band + 1); ++i) {
+      const ScreenTriangle& t = triangles[i];
+      if (!setup.setup(t.v, width, height)) continue;
+      clearRowsUpTo(setup.maxY);
+      ++stats.trianglesRasterized;
+      fillTriangle(setup, t.plane, t.id, fb, stats);
+    }
   }
   clearRowsUpTo(height - 1);
 }

@@ -7,7 +7,9 @@
 #include <set>
 
 #include "TestSupport.hpp"
+#include "zrender/Camera.hpp"
 #include "zrender/RasterRules.hpp"
+#include "zrender/Renderer.hpp"
 #include "zrender/Shader.hpp"
 
 namespace zrender {
@@ -191,6 +193,36 @@ TEST(Shading, DepthModeIsWhiteNearBlackFar) {
   EXPECT_EQ(r.color.at<cv::Vec3b>(2, 5), cv::Vec3b(255, 255, 255));
   EXPECT_EQ(r.color.at<cv::Vec3b>(5, 3), cv::Vec3b(0, 0, 0));
   EXPECT_EQ(r.color.at<cv::Vec3b>(7, 7), cv::Vec3b(30, 20, 10));  // BGR of (10, 20, 30)
+}
+
+TEST(Shading, RowsShadedAsTheyBecomeFinalEqualOneShadingAfterTheFrame) {
+  // The row-ordered algorithms have rows shaded band by band while they render (rowsFinal);
+  // the result must be the frame shaded in one pass afterwards, for every mode, with and
+  // without MSAA, on a scene tall enough for many bands (100 rows: 3 bands + a rest; 200
+  // sample rows with MSAA).
+  auto mesh = test::randomSoup(11, 400, false);
+  for (ShadingMode mode : {ShadingMode::Normal, ShadingMode::Flat, ShadingMode::Phong,
+                           ShadingMode::Random, ShadingMode::Id, ShadingMode::Depth}) {
+    for (int msaa : {1, 4}) {
+      for (const std::string algorithm : {"zbuffer", "hierarchical", "scanline", "interval"}) {
+        SceneSettings s = test::tinySettings(100);
+        s.shading = mode;
+        s.msaa = msaa;
+        s.cull = false;
+        Warnings w;
+        const Scene scene = makeScene(s, mesh, w);
+        const Camera camera = makeCamera(scene);
+        Renderer renderer(scene, algorithm);
+        renderer.renderFrame(camera);
+        cv::Mat whole;
+        Shader(scene, mode).shade(renderer.buffer(), camera, renderer.sampleScale(), whole);
+        ASSERT_EQ(whole.size(), renderer.color().size());
+        EXPECT_EQ(cv::countNonZero(cv::Mat(whole != renderer.color()).reshape(1)), 0)
+            << algorithm << " msaa " << msaa << " mode " << int(mode);
+        EXPECT_GT(test::coveredSamples(renderer.buffer()), 2000u);
+      }
+    }
+  }
 }
 
 TEST(Msaa, HalfCoveredPixelIsTheExactMeanOfItsSamples) {

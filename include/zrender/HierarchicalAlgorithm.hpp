@@ -75,6 +75,8 @@ class HzbRasterizer {
       __builtin_prefetch(fb_->row(y) + maxX, 1);
     }
   }
+  // Clears what no triangle reached in sample rows [0, rows), so that they can be read.
+  void finishRows(int rows) { pyramid_.prepareRows(0, std::min(rows, fb_->height()) - 1); }
   // Clears what no triangle reached; the buffer is then final.
   void finish() { pyramid_.finish(); }
   const DepthPyramid& pyramid() const { return pyramid_; }

@@ -23,6 +23,15 @@ class Shader {
   // pixel is the rounded mean of its four samples' colors, background included).
   void shade(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color);
 
+  // The same in steps, so that rows are colored while their keys are still in cache: begin()
+  // sizes `color` and builds the frame's tables; rowsFinal(n) says that sample rows [0, n) of
+  // `fb` hold their final keys and colors the pixel rows they complete (depth mode, which
+  // stretches over the whole frame's depths, waits); finish() colors the rest. `fb` and
+  // `color` must stay alive and unresized until finish().
+  void begin(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color);
+  void rowsFinal(int sampleRows);
+  void finish();
+
  private:
   struct FaceCache {
     uint32_t stamp = 0;  // frame in which the entry was computed
@@ -36,6 +45,8 @@ class Shader {
   };
 
   uint32_t faceColor(uint32_t faceId);
+  uint32_t sampleColor(DepthKey key, int x, int y);  // 0x00RRGGBB; x, y in samples
+  void shadePixelRows(int endRow);                   // rows [shadedRows_, endRow) of the image
   uint32_t faceShadeIndex(uint32_t faceId);
   cv::Vec3b shadeSample(uint32_t faceId, const Vec3& rayDir);
   cv::Vec3f sampleTexture(const cv::Vec2d& uv) const;
@@ -47,6 +58,15 @@ class Shader {
   bool perSample_ = false;
 
   // Per-frame state.
+  const FrameBuffer* fb_ = nullptr;
+  cv::Mat* color_ = nullptr;
+  int scale_ = 1;
+  int shadedRows_ = 0;  // pixel rows colored so far
+  uint32_t background_ = 0;
+  bool wholeTable_ = false;  // colorTable_ holds every face's color
+  float depthLo_ = 0.0f;     // depth mode: the frame's depth range
+  double depthRange_ = 1.0;
+  double rayScaleX_ = 0.0, rayScaleY_ = 0.0, rayOriginX_ = 0.0, rayOriginY_ = 0.0;
   uint32_t frame_ = 0;
   std::vector<FaceCache> cache_;
   std::vector<uint32_t> colorTable_;  // [0] background, [id + 1] face color (one color per face)

@@ -18,6 +18,11 @@ class TriangleBands {
   // their first row (a counting sort: linear, stable). Valid until the next call.
   const std::vector<ScreenTriangle>& sort(const FrameGeometry& g, int width, int height);
 
+  // After sort(): the bands, and the triangles of band b (first rows b * 32 to b * 32 + 31)
+  // at indices [bandStart(b), bandStart(b + 1)) of the sorted triangles.
+  int bandCount() const { return int(bandStart_.size()) - 1; }
+  uint32_t bandStart(int band) const { return bandStart_[size_t(band)]; }
+
  private:
   std::vector<uint32_t> band_, bandStart_, cursor_;  // scratch kept from frame to frame
   std::vector<ScreenTriangle> sorted_;

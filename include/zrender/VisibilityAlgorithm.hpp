@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -21,6 +22,20 @@ struct FrameInput {
   // Every face transformed, in id order, when the algorithm asked for it (transformsAll());
   // otherwise empty and the algorithm calls transformer.transformFace() as it goes.
   FrameGeometry& geometry;
+  // Called by algorithms that finish rows in order (top to bottom), with n when sample rows
+  // [0, n) hold their final keys, so that they are shaded while still in cache instead of
+  // read back from memory afterwards. Optional both ways: may be empty, and an algorithm need
+  // not call it.
+  std::function<void(int)> onRowsFinal = nullptr;
+
+  void rowsFinal(int rows) const {
+    if (onRowsFinal) onRowsFinal(rows);
+  }
+  // For algorithms that finish one row at a time: reports rows 32 at a time (a call per row
+  // would cost more than it saves).
+  void rowFinished(int y) const {
+    if (((y + 1) & 31) == 0) rowsFinal(y + 1);
+  }
 };
 
 // A hidden-surface algorithm: fills a FrameBuffer with the nearest (depth, id) key of every
