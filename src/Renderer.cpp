@@ -50,7 +50,7 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
   const double t1 = nowMs();
 
   buffer_.resize(geometry_.width, geometry_.height);
-  shader_.begin(buffer_, camera, sampleScale_, color_);
+  shader_.begin(buffer_, camera, sampleScale_, color_, &geometry_);
   FrameInput input{scene_, camera, transformer_, geometry_,
                    [this](int rows) { shader_.rowsFinal(rows); }};
   algorithm_->render(input, buffer_, stats_);

@@ -275,8 +275,10 @@ cv::Vec3b Shader::shadeSample(uint32_t faceId, const Vec3& dir) {
   return cv::Vec3b(q(rgb[2]), q(rgb[1]), q(rgb[0]));
 }
 
-void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
+void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color,
+                   const FrameGeometry* geometry) {
   fb_ = &fb;
+  geometry_ = geometry;
   color_ = &color;
   scale_ = scale;
   shadedRows_ = 0;
@@ -303,20 +305,35 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   rayOriginX_ = -1.0 / camera.projection(0, 0);
   rayOriginY_ = 1.0 / camera.projection(1, 1);
 
-  // The common case (one sample per pixel, one color per face) is a table look-up per pixel.
-  // With few faces for the pixels (the bunny: 69k faces, 3.2M pixels), computing every face's
-  // color in id order first is cheaper than computing them on first sight, where each look-up
-  // of the face's normal is a cache miss.
-  const bool perFace = scale == 1 && !perSample_ && mode_ != ShadingMode::Depth;
-  wholeTable_ = perFace && size_t(scene_.faceCount()) * 16 <= fb.size();
-  if (wholeTable_) {
+  perFace_ = scale == 1 && !perSample_ && mode_ != ShadingMode::Depth;
+  tableState_ = TableState::Undecided;
+  tableFaces_ = 0;
+}
+
+void Shader::prepareTable() {
+  // The common case (one sample per pixel, one color per face) is a table look-up per pixel,
+  // when there are few faces for the pixels (the bunny: 31k front faces, 3.2M pixels):
+  // computing the colors of the frame's faces in a row is cheaper than computing them on first
+  // sight, where each look-up of the face's normal is a cache miss. Only faces of the frame's
+  // geometry can be in the buffer, so only theirs are computed, as they appear.
+  if (tableState_ == TableState::Undecided) {
+    const size_t faces = geometry_ ? geometry_->faces.size() : scene_.faceCount();
+    tableState_ = perFace_ && faces * 16 <= fb_->size() ? TableState::On : TableState::Off;
+    if (tableState_ == TableState::Off) return;
     // Entry 0 is the background, entry id + 1 face id's color, so that the look-up of
     // uint32_t(key) + 1 needs no branch (the background id wraps to 0).
     colorTable_.resize(size_t(scene_.faceCount()) + 1);
     colorTable_[0] = background_;
-    for (uint32_t id = 0; id < scene_.faceCount(); ++id)
-      colorTable_[size_t(id) + 1] = faceColor(id);
+    if (!geometry_) {
+      for (uint32_t id = 0; id < scene_.faceCount(); ++id)
+        colorTable_[size_t(id) + 1] = faceColor(id);
+      return;
+    }
   }
+  if (tableState_ != TableState::On || !geometry_) return;
+  const std::vector<ScreenFace>& faces = geometry_->faces;
+  for (; tableFaces_ < faces.size(); ++tableFaces_)
+    colorTable_[size_t(faces[tableFaces_].id) + 1] = faceColor(faces[tableFaces_].id);
 }
 
 void Shader::rowsFinal(int sampleRows) {
@@ -365,7 +382,8 @@ void Shader::shadePixelRows(int endRow) {
   shadedRows_ = endRow;
   const FrameBuffer& fb = *fb_;
   cv::Mat& color = *color_;
-  if (wholeTable_) {
+  prepareTable();
+  if (tableState_ == TableState::On) {
     const uint32_t* table = colorTable_.data();
     shadeRows(fb, firstRow, endRow, background_, color,
               [table](DepthKey key) { return table[uint32_t(keyFaceId(key) + 1u)]; });

@@ -196,15 +196,17 @@ TEST(Shading, DepthModeIsWhiteNearBlackFar) {
 }
 
 TEST(Shading, RowsShadedAsTheyBecomeFinalEqualOneShadingAfterTheFrame) {
-  // The row-ordered algorithms have rows shaded band by band while they render (rowsFinal);
-  // the result must be the frame shaded in one pass afterwards, for every mode, with and
-  // without MSAA, on a scene tall enough for many bands (100 rows: 3 bands + a rest; 200
-  // sample rows with MSAA).
+  // The row-ordered algorithms have rows shaded band by band while they render (rowsFinal),
+  // and the renderer computes colors only for the faces of the frame's geometry (the octree's
+  // grows as it goes); the result must be the frame shaded in one pass afterwards, for every
+  // mode, with and without MSAA, on a scene tall enough for many bands (100 rows: 3 bands + a
+  // rest; 200 sample rows with MSAA).
   auto mesh = test::randomSoup(11, 400, false);
   for (ShadingMode mode : {ShadingMode::Normal, ShadingMode::Flat, ShadingMode::Phong,
                            ShadingMode::Random, ShadingMode::Id, ShadingMode::Depth}) {
     for (int msaa : {1, 4}) {
-      for (const std::string algorithm : {"zbuffer", "hierarchical", "scanline", "interval"}) {
+      for (const std::string algorithm :
+           {"zbuffer", "hierarchical", "scanline", "interval", "octree"}) {
         SceneSettings s = test::tinySettings(100);
         s.shading = mode;
         s.msaa = msaa;

@@ -6,6 +6,7 @@
 
 #include "zrender/Camera.hpp"
 #include "zrender/FrameBuffer.hpp"
+#include "zrender/FrameGeometry.hpp"
 #include "zrender/Scene.hpp"
 #include "zrender/Shading.hpp"
 
@@ -24,11 +25,14 @@ class Shader {
   void shade(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color);
 
   // The same in steps, so that rows are colored while their keys are still in cache: begin()
-  // sizes `color` and builds the frame's tables; rowsFinal(n) says that sample rows [0, n) of
+  // sizes `color` and sets the frame up (`geometry`, when given, holds every face that may be
+  // in `fb` by the time its rows are shaded: only those faces' colors are computed);
+  // rowsFinal(n) says that sample rows [0, n) of
   // `fb` hold their final keys and colors the pixel rows they complete (depth mode, which
   // stretches over the whole frame's depths, waits); finish() colors the rest. `fb` and
   // `color` must stay alive and unresized until finish().
-  void begin(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color);
+  void begin(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color,
+             const FrameGeometry* geometry = nullptr);
   void rowsFinal(int sampleRows);
   void finish();
 
@@ -46,7 +50,9 @@ class Shader {
 
   uint32_t faceColor(uint32_t faceId);
   uint32_t sampleColor(DepthKey key, int x, int y);  // 0x00RRGGBB; x, y in samples
-  void shadePixelRows(int endRow);                   // rows [shadedRows_, endRow) of the image
+  void shadePixelRows(int endRow);
+  void prepareTable();  // decides on colorTable_ and brings it up to date with the geometry // rows
+                        // [shadedRows_, endRow) of the image
   uint32_t faceShadeIndex(uint32_t faceId);
   cv::Vec3b shadeSample(uint32_t faceId, const Vec3& rayDir);
   cv::Vec3f sampleTexture(const cv::Vec2d& uv) const;
@@ -63,8 +69,11 @@ class Shader {
   int scale_ = 1;
   int shadedRows_ = 0;  // pixel rows colored so far
   uint32_t background_ = 0;
-  bool wholeTable_ = false;  // colorTable_ holds every face's color
-  float depthLo_ = 0.0f;     // depth mode: the frame's depth range
+  const FrameGeometry* geometry_ = nullptr;
+  bool perFace_ = false;  // one sample per pixel, one color per face
+  enum class TableState { Undecided, On, Off } tableState_ = TableState::Undecided;
+  size_t tableFaces_ = 0;  // geometry faces whose colors colorTable_ holds
+  float depthLo_ = 0.0f;   // depth mode: the frame's depth range
   double depthRange_ = 1.0;
   double rayScaleX_ = 0.0, rayScaleY_ = 0.0, rayOriginX_ = 0.0, rayOriginY_ = 0.0;
   uint32_t frame_ = 0;
