@@ -161,7 +161,6 @@ void pushFace(uint32_t faceId, const DepthPlane& plane, bool frontFacing, const 
   face.vertexCount = cornerCount;
   face.firstTriangle = uint32_t(out.triangles.size());
   face.triangleCount = pieceCount;
-  face.plane = plane;
   face.frontFacing = frontFacing;
   const uint32_t faceIndex = uint32_t(out.faces.size());
   out.vertices.insert(out.vertices.end(), corners, corners + cornerCount);

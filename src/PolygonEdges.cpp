@@ -64,8 +64,8 @@ void PolygonTables::build(const FrameGeometry& g, int width, int height) {
     }
     const uint32_t edgeCount = uint32_t(unsortedEdges_.size()) - edgeBegin;
     if (edgeCount == 0) continue;
-    unsortedPolygons_.push_back(
-        ClassifiedPolygon{face.plane, face.id, topRow, bottomRow, 0, edgeCount});
+    unsortedPolygons_.push_back(ClassifiedPolygon{g.triangles[face.firstTriangle].plane, face.id,
+                                                  topRow, bottomRow, 0, edgeCount});
     ++polygonsEnding[size_t(bottomRow)];
     triangleCount += face.triangleCount;
   }

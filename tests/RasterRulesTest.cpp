@@ -221,7 +221,6 @@ FrameGeometry geometryOf(const std::vector<std::array<FixedPoint, 3>>& tris,
     f.vertexCount = 3;
     f.firstTriangle = uint32_t(g.triangles.size());
     f.triangleCount = 1;
-    f.plane = planes[i];
     f.frontFacing = true;
     g.vertices.insert(g.vertices.end(), t.begin(), t.end());
     g.triangles.push_back(
@@ -347,7 +346,7 @@ TEST(DepthRule, TransformSetsTheRangeFromTheCornerDepths) {
   auto windowDepth = [&](double d) {
     return 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * d)) + 0.5;
   };
-  const DepthPlane& p = g.faces[0].plane;
+  const DepthPlane& p = g.triangles[g.faces[0].firstTriangle].plane;
   EXPECT_LE(double(p.minDepth()), windowDepth(1.0));
   EXPECT_NEAR(p.minDepth(), windowDepth(1.0), 1e-7);
   EXPECT_GE(double(p.maxDepth()), windowDepth(2.0));

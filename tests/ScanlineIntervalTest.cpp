@@ -104,12 +104,11 @@ FrameBuffer renderHandMadeFace(const std::vector<FixedPoint>& corners,
   face.vertexCount = uint32_t(corners.size());
   face.firstTriangle = 0;
   face.triangleCount = uint32_t(pieces.size());
-  face.plane = DepthPlane{0.0, 0.0, 0.5};
   face.frontFacing = true;
   geometry.faces.push_back(face);
   for (const auto& t : pieces)
-    geometry.triangles.push_back(
-        ScreenTriangle{{corners[t[0]], corners[t[1]], corners[t[2]]}, 0, face.id, face.plane});
+    geometry.triangles.push_back(ScreenTriangle{
+        {corners[t[0]], corners[t[1]], corners[t[2]]}, 0, face.id, DepthPlane{0.0, 0.0, 0.5}});
 
   auto alg = makeAlgorithm(algorithm);
   FrameBuffer fb;

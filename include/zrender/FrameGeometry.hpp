@@ -13,20 +13,20 @@ struct ScreenFace {
   uint32_t id;             // face id (SPEC §6)
   uint32_t firstVertex;    // corners in FrameGeometry::vertices, as projected (either winding)
   uint32_t vertexCount;    // >= 3
-  uint32_t firstTriangle;  // pieces in FrameGeometry::triangles
-  uint32_t triangleCount;
-  DepthPlane plane;  // window depth over the face, in sample coordinates
-  bool frontFacing;  // counter-clockwise in NDC
+  uint32_t firstTriangle;  // pieces in FrameGeometry::triangles (at least one), which carry
+  uint32_t triangleCount;  // the face's depth plane
+  bool frontFacing;        // counter-clockwise in NDC
 };
 
 // A triangulation piece of a face, positively oriented (orient2d(v0, v1, v2) > 0). The face's
-// id and depth plane are copied in so that the pixel loops never look the face up: with the
-// faces in a separate array that look-up was a cache miss per triangle.
+// id and depth plane live here so that the pixel loops never look the face up: with the
+// faces in a separate array that look-up was a cache miss per triangle. (The face's plane is
+// its first triangle's; a face record without it is less memory to write per frame.)
 struct ScreenTriangle {
   FixedPoint v[3];
   uint32_t face;     // index into FrameGeometry::faces
   uint32_t id;       // = faces[face].id
-  DepthPlane plane;  // = faces[face].plane
+  DepthPlane plane;  // window depth over the face, in sample coordinates
 };
 
 // Per-frame counters of the transform stage (SPEC §7 names in comments).
