@@ -92,10 +92,7 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
     const uint32_t base = uint32_t(k * slots);
     for (uint32_t f = 0; f < nf; ++f) {
       const uint32_t n = mesh.cornerCount(f);
-      const uint32_t* slot = cornerSlots_.data() + mesh.faceStart[f];
-      corners_.resize(n);
-      for (uint32_t i = 0; i < n; ++i) corners_[i] = base + slot[i];
-      appendFace(k * nf + f, corners_.data(), n, out);
+      appendFace(k * nf + f, FaceCorners{cornerSlots_.data() + mesh.faceStart[f], base}, n, out);
     }
   }
 }
@@ -114,13 +111,11 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   out.height = height_ * scale_;
   const uint32_t n = mesh.cornerCount(f);
   const uint32_t* slot = cornerSlots_.data() + mesh.faceStart[f];
-  corners_.resize(n);
-  for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t index = uint32_t(k * slots + slot[i]);
-    if (state_[index].frame != frame_) computeVertex(mvp_[k], slotPositions_[slot[i]], index);
-    corners_[i] = index;
-  }
-  appendFace(faceId, corners_.data(), n, out);
+  const FaceCorners corners{slot, uint32_t(k * slots)};
+  for (uint32_t i = 0; i < n; ++i)
+    if (state_[corners[i]].frame != frame_)
+      computeVertex(mvp_[k], slotPositions_[slot[i]], corners[i]);
+  appendFace(faceId, corners, n, out);
 }
 
 namespace {
@@ -203,7 +198,7 @@ DepthPlane FaceTransformer::planeOf(const Vec3* window, uint32_t count, bool& ok
   return planeThrough(normal, centre, window, count, ok);
 }
 
-void FaceTransformer::appendFace(uint32_t faceId, const uint32_t* corners, uint32_t n,
+void FaceTransformer::appendFace(uint32_t faceId, FaceCorners corners, uint32_t n,
                                  FrameGeometry& out) {
   TransformCounters& counters = out.counters;
   const uint64_t pieces = n >= 3 ? n - 2 : 1;  // counters are in triangles
@@ -257,7 +252,7 @@ void FaceTransformer::appendFace(uint32_t faceId, const uint32_t* corners, uint3
   appendSnappedFace(faceId, plane, pieces, out);
 }
 
-void FaceTransformer::appendTriangle(uint32_t faceId, const uint32_t* corners, FrameGeometry& out) {
+void FaceTransformer::appendTriangle(uint32_t faceId, FaceCorners corners, FrameGeometry& out) {
   // The common case, kept short: a triangle inside near/far and the guard band. Same result
   // as appendSnappedFace() would give, without its scratch buffers.
   TransformCounters& counters = out.counters;
@@ -288,7 +283,7 @@ void FaceTransformer::appendTriangle(uint32_t faceId, const uint32_t* corners, F
   pushFace(faceId, plane, frontFacing, points, 3, &piece, 1, out);
 }
 
-void FaceTransformer::appendClippedFace(uint32_t faceId, const uint32_t* corners, uint32_t n,
+void FaceTransformer::appendClippedFace(uint32_t faceId, FaceCorners corners, uint32_t n,
                                         uint64_t pieces, FrameGeometry& out) {
   TransformCounters& counters = out.counters;
   faceClip_.resize(n);

@@ -66,9 +66,15 @@ class FaceTransformer {
   // Vertices are numbered instance-major: index = instance * slots + slot.
   Vec4 clipOf(size_t vertex) const;
   void computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex);
-  void appendFace(uint32_t faceId, const uint32_t* corners, uint32_t count, FrameGeometry& out);
-  void appendTriangle(uint32_t faceId, const uint32_t* corners, FrameGeometry& out);
-  void appendClippedFace(uint32_t faceId, const uint32_t* corners, uint32_t count, uint64_t pieces,
+  // The vertices of a face's corners: the mesh's slots plus its instance's first vertex.
+  struct FaceCorners {
+    const uint32_t* slots;
+    uint32_t base;
+    uint32_t operator[](uint32_t i) const { return base + slots[i]; }
+  };
+  void appendFace(uint32_t faceId, FaceCorners corners, uint32_t count, FrameGeometry& out);
+  void appendTriangle(uint32_t faceId, FaceCorners corners, FrameGeometry& out);
+  void appendClippedFace(uint32_t faceId, FaceCorners corners, uint32_t count, uint64_t pieces,
                          FrameGeometry& out);
   void appendSnappedFace(uint32_t faceId, const DepthPlane& plane, uint64_t pieces,
                          FrameGeometry& out);
@@ -86,7 +92,6 @@ class FaceTransformer {
   std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth; valid like `snapped`
   uint32_t frame_ = 0;
   // Scratch buffers reused face after face.
-  std::vector<uint32_t> corners_;
   std::vector<Vec4> faceClip_, clipped_, clipScratch_;
   std::vector<Vec3> window_, guarded_, guardScratch_;
   std::vector<FixedPoint> snapped_;
