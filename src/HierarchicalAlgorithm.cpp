@@ -30,7 +30,7 @@ void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
   pyramid_.prepareRows(s.minY, s.maxY);
   // The z-buffer's own pixel loop; the pyramid needs updating only if it wrote something.
   const uint64_t written = stats.pixelsWritten;
-  fillTriangle(s, t.plane, t.id, *fb_, stats);
+  fill_(s, t.plane, t.id, *fb_, stats);
   if (stats.pixelsWritten != written) pyramid_.update(s.minX, s.minY, s.maxX, s.maxY);
 }
 

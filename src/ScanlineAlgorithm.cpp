@@ -1,7 +1,8 @@
 #include "zrender/ScanlineAlgorithm.hpp"
 
 #include <algorithm>
-#include <cstring>
+
+#include "zrender/TriangleFill.hpp"
 
 namespace zrender {
 
@@ -12,8 +13,8 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
   activeEdges_.resize(tables_.edges.size());
   activeCount_.assign(tables_.polygons.size(), 0);
   activePolygons_.clear();
-  rowKeys_.assign(size_t(std::max(width, 0)), kClearKey);
 
+  const SpanFillFunction fill = spanFill();
   uint64_t tested = 0, written = 0, spans = 0;
   size_t activeEdgeTotal = 0, maxActiveEdges = 0, maxActivePolygons = 0;
   for (int y = 0; y < height; ++y) {
@@ -31,8 +32,9 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
     maxActiveEdges = std::max(maxActiveEdges, activeEdgeTotal);
     maxActivePolygons = std::max(maxActivePolygons, activePolygons_.size());
 
-    DepthKey* row = rowKeys_.data();
-    int dirtyLeft = width, dirtyRight = 0;  // columns of the row buffer written on this row
+    // The one-row depth buffer is the frame buffer's row itself: cleared, then filled.
+    DepthKey* row = fb.row(y);
+    std::fill(row, row + width, kClearKey);
     size_t keep = 0;
     for (size_t i = 0; i < activePolygons_.size(); ++i) {
       const uint32_t pi = activePolygons_[i];
@@ -54,15 +56,7 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
         if (left >= right) continue;
         ++spans;
         tested += uint64_t(right - left);
-        dirtyLeft = std::min(dirtyLeft, left);
-        dirtyRight = std::max(dirtyRight, right);
-        for (int x = left; x < right; ++x) {
-          const DepthKey key = makeDepthKey(p.plane.at(x, rowBase), p.id);
-          if (key < row[x]) {
-            row[x] = key;
-            ++written;
-          }
-        }
+        written += fill(row, left, right, p.plane, rowBase, p.id);
       }
       // Edges ending on this row leave; the others step to the next row.
       uint32_t m = 0;
@@ -77,22 +71,10 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
       if (p.bottomRow != y) activePolygons_[keep++] = pi;
     }
     activePolygons_.resize(keep);
-    // Copy the row buffer to the frame buffer (clear outside the written range), and make the
-    // row buffer clear again for the next row.
-    DepthKey* out = fb.row(y);
-    if (dirtyLeft < dirtyRight) {
-      std::fill(out, out + dirtyLeft, kClearKey);
-      std::memcpy(out + dirtyLeft, row + dirtyLeft,
-                  sizeof(DepthKey) * size_t(dirtyRight - dirtyLeft));
-      std::fill(out + dirtyRight, out + width, kClearKey);
-      std::fill(row + dirtyLeft, row + dirtyRight, kClearKey);
-    } else {
-      std::fill(out, out + width, kClearKey);
-    }
     input.rowFinished(y);
   }
 
-  // pixelsWritten counts one-row buffer writes; a sample can be overwritten by nearer faces.
+  // pixelsWritten counts row writes; a sample can be overwritten by nearer faces.
   stats.pixelsTested += tested;
   stats.pixelsWritten += written;
   stats.extra.emplace_back("spans", spans);

@@ -6,13 +6,12 @@
 
 namespace zrender {
 
-void fillTriangle(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId, FrameBuffer& fb,
-                  RenderStats& stats) {
-  static const bool avx2 = cpuHasAvx2();  // a property of the machine, read once
-  if (avx2)
-    fillTriangleAvx2(s, plane, faceId, fb, stats);
-  else
-    fillTriangleScalar(s, plane, faceId, fb, stats);
+TriangleFillFunction triangleFill() {
+  return cpuHasAvx2() ? fillTriangleAvx2 : fillTriangleScalar;
+}
+
+SpanFillFunction spanFill() {
+  return cpuHasAvx2() ? fillSpanAvx2 : fillSpanScalar;
 }
 
 void fillTriangleScalar(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId,
@@ -178,6 +177,40 @@ ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& pla
   }
   stats.pixelsTested += uint64_t(0) - laneSum(t.testedLanes);
   stats.pixelsWritten += uint64_t(0) - laneSum(t.writtenLanes);
+}
+
+uint64_t fillSpanScalar(DepthKey* row, int left, int right, const DepthPlane& plane, double rowBase,
+                        uint32_t faceId) {
+  uint64_t written = 0;
+  for (int x = left; x < right; ++x) {
+    const DepthKey key = makeDepthKey(plane.at(x, rowBase), faceId);
+    if (key < row[x]) {
+      row[x] = key;
+      ++written;
+    }
+  }
+  return written;
+}
+
+// fillSpanScalar four samples at a time, with the same operations as fillTriangleAvx2 (and
+// plane.at(x) = a * (x + 0.5) + rowBase, x + 0.5 exact in a double).
+ZRENDER_AVX2 uint64_t fillSpanAvx2(DepthKey* row, int left, int right, const DepthPlane& plane,
+                                   double rowBase, uint32_t faceId) {
+  Avx2Triangle t;
+  t.minusOne = _mm256_set1_epi64x(-1);
+  t.id = _mm256_set1_epi64x(int64_t(faceId));
+  t.a = _mm256_set1_pd(plane.a);
+  t.loBits = _mm_set1_epi32(plane.loBits);
+  t.hiBits = _mm_set1_epi32(plane.hiBits);
+  t.testedLanes = t.writtenLanes = _mm256_setzero_si256();
+  const __m256d base = _mm256_set1_pd(rowBase), four = _mm256_set1_pd(4.0);
+  __m256d xCentre = _mm256_add_pd(_mm256_set1_pd(double(left)), _mm256_setr_pd(0.5, 1.5, 2.5, 3.5));
+  const __m256i zero = _mm256_setzero_si256();  // edge values: every lane inside
+  for (int x = left; x < right; x += 4) {
+    fillBlock(t, row + x, lanesUpTo(x, right - 1), zero, zero, zero, xCentre, base);
+    xCentre = _mm256_add_pd(xCentre, four);
+  }
+  return uint64_t(0) - laneSum(t.writtenLanes);
 }
 
 }  // namespace zrender

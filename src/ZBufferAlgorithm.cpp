@@ -18,6 +18,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     std::fill(fb.row(clearedRows), fb.row(lastRow) + width, kClearKey);
     clearedRows = lastRow + 1;
   };
+  const TriangleFillFunction fill = triangleFill();
   TriangleSetup setup;
   for (int band = 0; band < bands_.bandCount(); ++band) {
     // No later triangle starts above this band: the rows above it are final.
@@ -31,7 +32,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
       if (!setup.setup(t.v, width, height)) continue;
       clearRowsUpTo(setup.maxY);
       ++stats.trianglesRasterized;
-      fillTriangle(setup, t.plane, t.id, fb, stats);
+      fill(setup, t.plane, t.id, fb, stats);
     }
   }
   clearRowsUpTo(height - 1);

@@ -6,6 +6,7 @@
 
 #include "zrender/DepthPyramid.hpp"
 #include "zrender/TriangleBands.hpp"
+#include "zrender/TriangleFill.hpp"
 #include "zrender/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -84,6 +85,7 @@ class HzbRasterizer {
  private:
   FrameBuffer* fb_ = nullptr;
   DepthPyramid pyramid_;
+  TriangleFillFunction fill_ = triangleFill();
 };
 
 // Greene, Kass and Miller's hierarchical z-buffer without the object-space octree: every face

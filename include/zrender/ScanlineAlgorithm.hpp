@@ -10,8 +10,9 @@ namespace zrender {
 // The scan-line z-buffer (SPEC §1 `scanline`): polygons are drawn natively, row by row from the
 // top, from a classified polygon table and a classified edge table bucketed by top row. The
 // active polygon table holds the polygons that cross the current row; each keeps its own active
-// edges sorted by column and fills its spans pairwise (even-odd) into a one-row depth buffer,
-// which is then copied to the frame buffer.
+// edges sorted by column and fills its spans pairwise (even-odd) into a one-row depth buffer:
+// the frame buffer's current row itself (copying a separate row buffer out cost ~0.7 ms on the
+// bunny), so only that row is touched while it is built.
 class ScanlineAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "scanline"; }
@@ -30,7 +31,6 @@ class ScanlineAlgorithm : public VisibilityAlgorithm {
   // a polygon never has more active edges than edges, so the slots never overflow.
   std::vector<ActiveEdge> activeEdges_;
   std::vector<uint32_t> activeCount_;
-  std::vector<DepthKey> rowKeys_;  // the one-row depth buffer
 };
 
 }  // namespace zrender
