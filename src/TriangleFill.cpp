@@ -68,6 +68,18 @@ struct Avx2Triangle {
   __m256i testedLanes, writtenLanes;
 };
 
+// The constants of a face, counters at zero.
+ZRENDER_AVX2 inline Avx2Triangle avx2Face(const DepthPlane& plane, uint32_t faceId) {
+  Avx2Triangle t;
+  t.minusOne = _mm256_set1_epi64x(-1);
+  t.id = _mm256_set1_epi64x(int64_t(faceId));
+  t.a = _mm256_set1_pd(plane.a);
+  t.loBits = _mm_set1_epi32(plane.loBits);
+  t.hiBits = _mm_set1_epi32(plane.hiBits);
+  t.testedLanes = t.writtenLanes = _mm256_setzero_si256();
+  return t;
+}
+
 // Lanes k = 0..3 of the block starting at sample x that lie at or before maxX (-1 where true).
 ZRENDER_AVX2 inline __m256i lanesUpTo(int x, int maxX) {
   return _mm256_cmpgt_epi64(_mm256_set1_epi64x(int64_t(maxX) - x + 1),
@@ -110,13 +122,7 @@ ZRENDER_AVX2 inline uint64_t laneSum(__m256i v) {
 ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId,
                                    FrameBuffer& fb, RenderStats& stats) {
   static_assert(FrameBuffer::kPadding >= 3, "a block of four may pass the last sample by three");
-  Avx2Triangle t;
-  t.minusOne = _mm256_set1_epi64x(-1);
-  t.id = _mm256_set1_epi64x(int64_t(faceId));
-  t.a = _mm256_set1_pd(plane.a);
-  t.loBits = _mm_set1_epi32(plane.loBits);
-  t.hiBits = _mm_set1_epi32(plane.hiBits);
-  t.testedLanes = t.writtenLanes = _mm256_setzero_si256();
+  Avx2Triangle t = avx2Face(plane, faceId);
   // Edge values of the row's first block, and their steps per block and per row.
   __m256i rowStart[3], blockStep[3], rowStep[3];
   for (int i = 0; i < 3; ++i) {
@@ -196,13 +202,7 @@ uint64_t fillSpanScalar(DepthKey* row, int left, int right, const DepthPlane& pl
 // plane.at(x) = a * (x + 0.5) + rowBase, x + 0.5 exact in a double).
 ZRENDER_AVX2 uint64_t fillSpanAvx2(DepthKey* row, int left, int right, const DepthPlane& plane,
                                    double rowBase, uint32_t faceId) {
-  Avx2Triangle t;
-  t.minusOne = _mm256_set1_epi64x(-1);
-  t.id = _mm256_set1_epi64x(int64_t(faceId));
-  t.a = _mm256_set1_pd(plane.a);
-  t.loBits = _mm_set1_epi32(plane.loBits);
-  t.hiBits = _mm_set1_epi32(plane.hiBits);
-  t.testedLanes = t.writtenLanes = _mm256_setzero_si256();
+  Avx2Triangle t = avx2Face(plane, faceId);
   const __m256d base = _mm256_set1_pd(rowBase), four = _mm256_set1_pd(4.0);
   __m256d xCentre = _mm256_add_pd(_mm256_set1_pd(double(left)), _mm256_setr_pd(0.5, 1.5, 2.5, 3.5));
   const __m256i zero = _mm256_setzero_si256();  // edge values: every lane inside

@@ -353,6 +353,19 @@ TEST(DepthRule, TransformSetsTheRangeFromTheCornerDepths) {
   EXPECT_NEAR(p.maxDepth(), windowDepth(2.0), 1e-7);
 }
 
+// A plane for the vector-against-scalar tests: slopes up to 0.2 per sample, depths crossing 0
+// and 1, a random clamp range, and every 50th a NaN, infinite, huge or -0 x slope.
+DepthPlane randomPlane(std::mt19937& rng, int i) {
+  const double specials[] = {std::nan(""), HUGE_VAL, -HUGE_VAL, 1e300, -0.0};
+  std::uniform_real_distribution<double> slope(-0.2, 0.2), offset(-0.5, 1.5);
+  DepthPlane plane{slope(rng), slope(rng), offset(rng)};
+  if (i % 50 == 0) plane.a = specials[(i / 50) % 5];
+  const float lo = std::uniform_real_distribution<float>(0.0f, 0.6f)(rng);
+  plane.loBits = int32_t(floatBits(lo));
+  plane.hiBits = int32_t(floatBits(std::min(1.0f, lo + 0.5f)));
+  return plane;
+}
+
 TEST(FillLoop, VectorFillMatchesTheScalarFillBitForBit) {
   if (!cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the scalar fill runs";
   // Random triangles from a sample wide to wider than the image, reaching past every border,
@@ -362,8 +375,6 @@ TEST(FillLoop, VectorFillMatchesTheScalarFillBitForBit) {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int32_t> coord(-12 * kSubpixel, 50 * kSubpixel);
   std::uniform_int_distribution<int32_t> near(-6 * kSubpixel, 6 * kSubpixel);
-  std::uniform_real_distribution<double> slope(-0.2, 0.2), offset(-0.5, 1.5);
-  const double specials[] = {std::nan(""), HUGE_VAL, -HUGE_VAL, 1e300, -0.0};
   FrameBuffer scalar, vector;
   scalar.resize(width, height);
   vector.resize(width, height);
@@ -382,11 +393,7 @@ TEST(FillLoop, VectorFillMatchesTheScalarFillBitForBit) {
     if (orient2d(v[0], v[1], v[2]) == 0) continue;
     TriangleSetup s;
     if (!s.setup(v, width, height)) continue;
-    DepthPlane plane{slope(rng), slope(rng), offset(rng)};
-    if (i % 50 == 0) plane.a = specials[(i / 50) % 5];
-    const float lo = std::uniform_real_distribution<float>(0.0f, 0.6f)(rng);
-    plane.loBits = int32_t(floatBits(lo));
-    plane.hiBits = int32_t(floatBits(std::min(1.0f, lo + 0.5f)));
+    const DepthPlane plane = randomPlane(rng, i);
     fillTriangleScalar(s, plane, uint32_t(i), scalar, scalarStats);
     fillTriangleAvx2(s, plane, uint32_t(i), vector, vectorStats);
     ++filled;
@@ -408,8 +415,6 @@ TEST(FillLoop, VectorSpanFillMatchesTheScalarSpanFillBitForBit) {
   const int width = 37, rows = 9;
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> column(0, width - 1);
-  std::uniform_real_distribution<double> slope(-0.2, 0.2), offset(-0.5, 1.5);
-  const double specials[] = {std::nan(""), HUGE_VAL, -HUGE_VAL, 1e300, -0.0};
   FrameBuffer scalar, vector;
   scalar.resize(width, rows);
   vector.resize(width, rows);
@@ -421,11 +426,7 @@ TEST(FillLoop, VectorSpanFillMatchesTheScalarSpanFillBitForBit) {
     if (left >= right) std::swap(left, right);
     if (i % 7 == 0) right = width;
     const int y = i % rows;
-    DepthPlane plane{slope(rng), slope(rng), offset(rng)};
-    if (i % 50 == 0) plane.a = specials[(i / 50) % 5];
-    const float lo = std::uniform_real_distribution<float>(0.0f, 0.6f)(rng);
-    plane.loBits = int32_t(floatBits(lo));
-    plane.hiBits = int32_t(floatBits(std::min(1.0f, lo + 0.5f)));
+    const DepthPlane plane = randomPlane(rng, i);
     const double rowBase = plane.rowBase(y);
     scalarWritten += fillSpanScalar(scalar.row(y), left, right, plane, rowBase, uint32_t(i));
     vectorWritten += fillSpanAvx2(vector.row(y), left, right, plane, rowBase, uint32_t(i));
