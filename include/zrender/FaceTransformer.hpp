@@ -44,7 +44,7 @@ class FaceTransformer {
  private:
   // What every face using a vertex (of one instance) reads first, kept small (16 bytes) so
   // that the whole array stays in cache: faces reach their vertices in no particular order.
-  // The window position lives apart (window_) and is read only by faces that survive culling;
+  // The window position lives apart (vertexWindow_) and is read only by faces that survive culling;
   // clip coordinates are recomputed (clipOf) by the rare faces that need clipping.
   struct VertexState {
     FixedPoint snapped{0, 0};  // 1/256 sample units; valid when `code` has no kNeedsClip bit

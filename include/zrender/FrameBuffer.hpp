@@ -13,7 +13,7 @@ namespace zrender {
 class FrameBuffer {
  public:
   // Keys after the last sample, never part of the image: a pixel loop may read and write back
-  // a few samples past the end of a row (fillTriangleAvx2), also on the last row.
+  // a few samples past the end of a row (fillTriangleAvx2, fillSpanAvx2), also on the last row.
   static constexpr size_t kPadding = 4;
 
   void resize(int width, int height) {

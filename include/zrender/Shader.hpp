@@ -27,10 +27,10 @@ class Shader {
   // The same in steps, so that rows are colored while their keys are still in cache: begin()
   // sizes `color` and sets the frame up (`geometry`, when given, holds every face that may be
   // in `fb` by the time its rows are shaded: only those faces' colors are computed);
-  // rowsFinal(n) says that sample rows [0, n) of
-  // `fb` hold their final keys and colors the pixel rows they complete (depth mode, which
-  // stretches over the whole frame's depths, waits); finish() colors the rest. `fb` and
-  // `color` must stay alive and unresized until finish().
+  // rowsFinal(n) says that sample rows [0, n) of `fb` hold their final keys and colors the
+  // pixel rows they complete (depth mode, which stretches over the whole frame's depths,
+  // waits); finish() colors the rest. `fb` and `color` must stay alive and unresized until
+  // finish().
   void begin(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color,
              const FrameGeometry* geometry = nullptr);
   void rowsFinal(int sampleRows);
@@ -50,9 +50,8 @@ class Shader {
 
   uint32_t faceColor(uint32_t faceId);
   uint32_t sampleColor(DepthKey key, int x, int y);  // 0x00RRGGBB; x, y in samples
-  void shadePixelRows(int endRow);
-  void prepareTable();  // decides on colorTable_ and brings it up to date with the geometry // rows
-                        // [shadedRows_, endRow) of the image
+  void shadePixelRows(int endRow);                   // rows [shadedRows_, endRow) of the image
+  void prepareTable();  // decides on colorTable_ and brings it up to date with the geometry
   uint32_t faceShadeIndex(uint32_t faceId);
   cv::Vec3b shadeSample(uint32_t faceId, const Vec3& rayDir);
   cv::Vec3f sampleTexture(const cv::Vec2d& uv) const;
