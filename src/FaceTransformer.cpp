@@ -30,20 +30,32 @@ void FaceTransformer::beginFrame(const Camera& camera) {
   }
 }
 
-void FaceTransformer::prepare() {
+void FaceTransformer::prepare(const std::vector<uint32_t>* faceOrder) {
   const Mesh& mesh = *scene_.mesh;
+  const uint32_t nf = uint32_t(mesh.faceCount());
   constexpr uint32_t kUnseen = ~0u;
   std::vector<uint32_t> slotOf(mesh.positions.size(), kUnseen);
   slotPositions_.clear();
   cornerSlots_.resize(mesh.corners.size());
-  for (size_t i = 0; i < mesh.corners.size(); ++i) {
-    const size_t position = size_t(mesh.corners[i].position);
-    if (slotOf[position] == kUnseen) {
-      slotOf[position] = uint32_t(slotPositions_.size());
-      slotPositions_.push_back(mesh.positions[position]);
+  auto visitFace = [&](uint32_t f) {
+    for (uint32_t i = mesh.faceStart[f]; i < mesh.faceStart[f + 1]; ++i) {
+      const size_t position = size_t(mesh.corners[i].position);
+      if (slotOf[position] == kUnseen) {
+        slotOf[position] = uint32_t(slotPositions_.size());
+        slotPositions_.push_back(mesh.positions[position]);
+      }
+      cornerSlots_[i] = slotOf[position];
     }
-    cornerSlots_[i] = slotOf[position];
+  };
+  if (faceOrder && nf > 0) {
+    // Faces of every instance: the first instance of a mesh face met decides.
+    std::vector<uint8_t> seen(nf, 0);
+    for (uint32_t id : *faceOrder) {
+      const uint32_t f = id % nf;
+      if (!seen[f]) seen[f] = 1, visitFace(f);
+    }
   }
+  for (uint32_t f = 0; f < nf; ++f) visitFace(f);  // the rest (all, without an order)
   prepared_ = true;
 }
 

@@ -32,8 +32,8 @@ Renderer::Renderer(const Scene& scene, const std::string& algorithm)
       sampleScale_(scene.settings.msaa == 4 ? 2 : 1),
       transformer_(scene, sampleScale_, scene.settings.cull) {
   const double t0 = nowMs();
-  transformer_.prepare();
   algorithm_->prepare(scene);
+  transformer_.prepare(algorithm_->faceOrder());
   prepareMs_ = nowMs() - t0;
 }
 

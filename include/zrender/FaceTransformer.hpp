@@ -20,10 +20,11 @@ class FaceTransformer {
   FaceTransformer(const Scene& scene, const Camera& camera, int sampleScale, bool cull);
 
   // Model-only set-up (done on first use if not called): the vertices in the order faces first
-  // use them. Nothing drawn depends on that order, but faces read their vertices by it: in
-  // first-use order consecutive faces find theirs in cache (scanned models such as the bunny
-  // list vertices in an order unrelated to their faces).
-  void prepare();
+  // use them, the faces taken in `faceOrder` (global face ids) when given, else in file order.
+  // Nothing drawn depends on that order, but faces read their vertices by it: in first-use
+  // order consecutive faces find theirs in cache (scanned models such as the bunny list
+  // vertices in an order unrelated to their faces).
+  void prepare(const std::vector<uint32_t>* faceOrder = nullptr);
 
   // Takes the frame's camera and forgets the vertices of the previous frame. The per-vertex
   // storage is kept from frame to frame: for a model of millions of vertices, allocating and

@@ -38,6 +38,7 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
   std::string name() const override { return "octree"; }
   void prepare(const Scene& scene) override { octree_.build(scene); }
   bool transformsAll() const override { return false; }
+  const std::vector<uint32_t>* faceOrder() const override { return &octree_.faces(); }
   void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
 
   const Octree& octree() const { return octree_; }

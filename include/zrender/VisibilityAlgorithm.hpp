@@ -50,6 +50,9 @@ class VisibilityAlgorithm {
   // True when the renderer should transform every face before render() (timed as
   // transform_ms); false for algorithms that transform lazily.
   virtual bool transformsAll() const { return true; }
+  // After prepare(): the order in which the algorithm usually transforms faces (global face
+  // ids), for the transformer to lay vertices out by; null for face id order.
+  virtual const std::vector<uint32_t>* faceOrder() const { return nullptr; }
   // `fb` is sized to geometry's sample size but not cleared: clearing is part of the work.
   virtual void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) = 0;
 };
