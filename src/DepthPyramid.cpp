@@ -48,6 +48,20 @@ void DepthPyramid::rescanTile(int tx, int ty) {
   const int x0 = tx << kTileShift, y0 = ty << kTileShift;
   const int x1 = std::min(x0 + kTileSize, width_), y1 = std::min(y0 + kTileSize, height_);
   const size_t t = size_t(ty) * tilesX_ + tx;
+  if (levels_[0][t] == kClearKey) {
+    // A tile with clear samples keeps kClearKey as its maximum while any remains: if one of a
+    // sparse grid of its samples is still clear (bottom rows first: triangles come top to
+    // bottom), it holds the maximum, and the tile need not be scanned.
+    for (int y = y1 - 1; y >= y0; y -= 5) {
+      const DepthKey* row = fb_->row(y);
+      for (int x = x1 - 1; x >= x0; x -= 5) {
+        if (row[x] == kClearKey) {
+          tileArgMax_[t] = uint32_t(size_t(y) * size_t(width_) + size_t(x));
+          return;
+        }
+      }
+    }
+  }
   // The maximum of each row (branch-free; a constant trip count for whole tiles), the last row
   // holding the overall maximum, then the last sample of that row holding it: for a tile with
   // samples still clear, the bottom-right-most of them, which triangles drawn top to bottom

@@ -24,7 +24,9 @@ namespace zrender {
 // which sample holds its maximum (for a clear tile, its last sample). Keys only decrease, so
 // the maximum is unchanged until that sample is written; update() checks that one sample per
 // tile a triangle touched, rescans only then, and propagates a change upward only while it
-// changes the parent. A stale node (too large) would still be a valid bound.
+// changes the parent. A tile that still has clear samples first looks for one on a sparse grid
+// of 16 samples, which then holds the maximum, unchanged: most rescans end there (bunny,
+// hierarchical raster 9.3 -> 8.7 ms). A stale node (too large) would still be a valid bound.
 //
 // The pyramid also clears the buffer lazily, a row of tiles at a time just before triangles
 // first reach it (prepareRows); finish() clears what no triangle reached. Logically every
