@@ -8,24 +8,18 @@
 namespace zrender {
 
 void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
-  // The clipped sample bounds, as TriangleSetup::setup computes them, before the edge
-  // functions: a rejected triangle costs the bounds, one plane evaluation and a few loads.
-  const FixedPoint* v = t.v;
-  const int width = fb_->width(), height = fb_->height();
-  const int minX = std::max(firstSampleAtOrAfter(std::min({v[0].x, v[1].x, v[2].x})), 0);
-  const int maxX = std::min(lastSampleAtOrBefore(std::max({v[0].x, v[1].x, v[2].x})), width - 1);
-  const int minY = std::max(firstSampleAtOrAfter(std::min({v[0].y, v[1].y, v[2].y})), 0);
-  const int maxY = std::min(lastSampleAtOrBefore(std::max({v[0].y, v[1].y, v[2].y})), height - 1);
-  if (minX > maxX || minY > maxY) return;  // no sample centre of the image (setup() agrees)
+  // The sample bounds before the edge functions: a rejected triangle costs the bounds, one
+  // plane evaluation and a few loads.
+  TriangleSetup s;
+  if (!s.bounds(t.v, fb_->width(), fb_->height())) return;  // no sample centre of the image
   // Every sample the triangle covers lies in these bounds, so a nearest key behind the
   // pyramid there means every depth test would fail (ids included).
-  const DepthKey nearest = nearestKeyOver(t.plane, t.id, minX, minY, maxX, maxY);
-  if (pyramid_.occludes(minX, minY, maxX, maxY, nearest)) {
+  const DepthKey nearest = nearestKeyOver(t.plane, t.id, s.minX, s.minY, s.maxX, s.maxY);
+  if (pyramid_.occludes(s.minX, s.minY, s.maxX, s.maxY, nearest)) {
     ++stats.trianglesHzbCulled;
     return;
   }
-  TriangleSetup s;
-  if (!s.setup(t.v, width, height)) return;
+  s.edges(t.v);
   ++stats.trianglesRasterized;
   pyramid_.prepareRows(s.minY, s.maxY);
   // The z-buffer's own pixel loop; the pyramid needs updating only if it wrote something.

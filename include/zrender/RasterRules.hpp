@@ -91,17 +91,25 @@ struct TriangleSetup {
   // Returns false when the triangle covers no sample centre of the image (zero area or off
   // screen). `v` must be positively oriented (orient2d(v0, v1, v2) > 0).
   bool setup(const FixedPoint v[3], int width, int height) {
+    if (!bounds(v, width, height)) return false;
+    edges(v);
+    return true;
+  }
+  // The two halves of setup(), for callers that may reject the triangle from its bounds alone:
+  // the sample bounds (false when empty), then the edge functions from (minX, minY).
+  bool bounds(const FixedPoint v[3], int width, int height) {
     const int32_t x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
     const int32_t y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
     minX = std::max(firstSampleAtOrAfter(x0), 0);
     maxX = std::min(lastSampleAtOrBefore(x1), width - 1);
     minY = std::max(firstSampleAtOrAfter(y0), 0);
     maxY = std::min(lastSampleAtOrBefore(y1), height - 1);
-    if (minX > maxX || minY > maxY) return false;
+    return minX <= maxX && minY <= maxY;
+  }
+  void edges(const FixedPoint v[3]) {
     edge[0] = EdgeFunction(v[0], v[1], minX, minY);
     edge[1] = EdgeFunction(v[1], v[2], minX, minY);
     edge[2] = EdgeFunction(v[2], v[0], minX, minY);
-    return true;
   }
 };
 
