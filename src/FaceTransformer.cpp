@@ -35,9 +35,12 @@ void FaceTransformer::prepare(const std::vector<uint32_t>* faceOrder) {
   const uint32_t nf = uint32_t(mesh.faceCount());
   constexpr uint32_t kUnseen = ~0u;
   std::vector<uint32_t> slotOf(mesh.positions.size(), kUnseen);
+  std::vector<uint8_t> visited(nf, 0);
   slotPositions_.clear();
   cornerSlots_.resize(mesh.corners.size());
   auto visitFace = [&](uint32_t f) {
+    if (visited[f]) return;
+    visited[f] = 1;
     for (uint32_t i = mesh.faceStart[f]; i < mesh.faceStart[f + 1]; ++i) {
       const size_t position = size_t(mesh.corners[i].position);
       if (slotOf[position] == kUnseen) {
@@ -47,15 +50,10 @@ void FaceTransformer::prepare(const std::vector<uint32_t>* faceOrder) {
       cornerSlots_[i] = slotOf[position];
     }
   };
-  if (faceOrder && nf > 0) {
-    // Faces of every instance: the first instance of a mesh face met decides.
-    std::vector<uint8_t> seen(nf, 0);
-    for (uint32_t id : *faceOrder) {
-      const uint32_t f = id % nf;
-      if (!seen[f]) seen[f] = 1, visitFace(f);
-    }
-  }
-  for (uint32_t f = 0; f < nf; ++f) visitFace(f);  // the rest (all, without an order)
+  // Faces of every instance: the first instance of a mesh face met decides.
+  if (faceOrder && nf > 0)
+    for (uint32_t id : *faceOrder) visitFace(id % nf);
+  for (uint32_t f = 0; f < nf; ++f) visitFace(f);  // the rest, in file order
   prepared_ = true;
 }
 

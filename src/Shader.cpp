@@ -389,7 +389,7 @@ void Shader::shadePixelRows(int endRow) {
               [table](DepthKey key) { return table[uint32_t(keyFaceId(key) + 1u)]; });
     return;
   }
-  if (scale_ == 1 && !perSample_ && mode_ != ShadingMode::Depth) {
+  if (perFace_) {
     const uint32_t background = background_, frame = frame_;
     const FaceCache* cache = cache_.data();
     shadeRows(fb, firstRow, endRow, background, color, [&](DepthKey key) {

@@ -18,40 +18,30 @@ void fillTriangleScalar(const TriangleSetup& s, const DepthPlane& plane, uint32_
                         FrameBuffer& fb, RenderStats& stats) {
   int64_t e0 = s.edge[0].value, e1 = s.edge[1].value, e2 = s.edge[2].value;
   const int64_t x0 = s.edge[0].stepX, x1 = s.edge[1].stepX, x2 = s.edge[2].stepX;
-  uint64_t tested = 0, written = 0;
   for (int y = s.minY; y <= s.maxY; ++y) {
-    const double rowBase = plane.rowBase(y);
-    DepthKey* row = fb.row(y);
     int64_t r0 = e0, r1 = e1, r2 = e2;
     int x = s.minX;
-    // Step to the first covered sample of the row, then test depth until the last one: a
-    // triangle's samples on a row are contiguous.
+    // The covered samples of a row are contiguous: step to the first, then to the end of the
+    // run, and depth-test the run as the scan-line z-buffer does a span.
     while (x <= s.maxX && (r0 | r1 | r2) < 0) {
       r0 += x0;
       r1 += x1;
       r2 += x2;
       ++x;
     }
-    double xCentre = x + 0.5;
-    while (x <= s.maxX && (r0 | r1 | r2) >= 0) {
-      const DepthKey key = makeDepthKey(plane.atCentre(xCentre, rowBase), faceId);
-      ++tested;
-      if (key < row[x]) {
-        row[x] = key;
-        ++written;
-      }
+    int end = x;
+    while (end <= s.maxX && (r0 | r1 | r2) >= 0) {
       r0 += x0;
       r1 += x1;
       r2 += x2;
-      ++x;
-      xCentre += 1.0;
+      ++end;
     }
+    stats.pixelsTested += uint64_t(end - x);
+    stats.pixelsWritten += fillSpanScalar(fb.row(y), x, end, plane, plane.rowBase(y), faceId);
     e0 += s.edge[0].stepY;
     e1 += s.edge[1].stepY;
     e2 += s.edge[2].stepY;
   }
-  stats.pixelsTested += tested;
-  stats.pixelsWritten += written;
 }
 
 #define ZRENDER_AVX2 __attribute__((target("avx2")))

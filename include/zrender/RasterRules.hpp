@@ -142,14 +142,12 @@ struct DepthPlane {
   int32_t hiBits = kOneBits;  // bits of the greatest
 
   double rowBase(int row) const { return b * (row + 0.5) + c; }
-  float at(int column, double rowBase) const { return atCentre(column + 0.5, rowBase); }
-  // The same with the sample centre's x given (column + 0.5, exact in a double), for loops
-  // that step it by 1.0 instead of converting the column each time.
-  float atCentre(double xCentre, double rowBase) const {
+  float at(int column, double rowBase) const {
     // Clamped on the bits, as integers (non-negative floats order like their bits): branch
     // free, and -0.0 or a NaN cannot slip through as a negative float whose key would sort
-    // above the background.
-    const int32_t bits = static_cast<int32_t>(floatBits(static_cast<float>(a * xCentre + rowBase)));
+    // above the background. (column + 0.5 is exact in a double.)
+    const int32_t bits =
+        static_cast<int32_t>(floatBits(static_cast<float>(a * (column + 0.5) + rowBase)));
     return bitsToFloat(static_cast<uint32_t>(std::min(std::max(bits, loBits), hiBits)));
   }
   float minDepth() const { return bitsToFloat(uint32_t(loBits)); }
