@@ -30,7 +30,8 @@ void FaceTransformer::beginFrame(const Camera& camera) {
   }
 }
 
-void FaceTransformer::prepare(const std::vector<uint32_t>* faceOrder) {
+void FaceTransformer::prepare(const std::vector<uint32_t>* faceOrder,
+                              const std::vector<uint32_t>* batches) {
   const Mesh& mesh = *scene_.mesh;
   const uint32_t nf = uint32_t(mesh.faceCount());
   constexpr uint32_t kUnseen = ~0u;
@@ -55,18 +56,68 @@ void FaceTransformer::prepare(const std::vector<uint32_t>* faceOrder) {
     for (uint32_t id : *faceOrder) visitFace(id % nf);
   for (uint32_t f = 0; f < nf; ++f) visitFace(f);  // the rest, in file order
   prepared_ = true;
+  if (faceOrder && batches) prepareBatches(*faceOrder, *batches);
+}
+
+void FaceTransformer::prepareBatches(const std::vector<uint32_t>& faceOrder,
+                                     const std::vector<uint32_t>& batches) {
+  const Mesh& mesh = *scene_.mesh;
+  const uint32_t nf = uint32_t(mesh.faceCount());
+  const size_t slots = slotPositions_.size();
+  batchFaces_ = faceOrder;
+  batchFaceStart_ = batches;
+  batchFaceCorners_.resize(faceOrder.size());
+  for (size_t i = 0; i < faceOrder.size(); ++i) {
+    const uint32_t n = mesh.cornerCount(faceOrder[i] % nf);
+    batchFaceCorners_[i] = uint8_t(n <= 255 ? n : 0);
+  }
+  batchVertexStart_.assign(1, 0);
+  batchCornerStart_.assign(1, 0);
+  batchVertexSlot_.clear();
+  batchVertexInstance_.clear();
+  batchCorners_.clear();
+  // Local numbers of the vertices of the batch being built, by global vertex; `seen` tells
+  // whether the entry belongs to this batch.
+  std::vector<uint32_t> localOf(slots * scene_.instanceCount());
+  std::vector<uint32_t> seen(localOf.size(), ~0u);
+  for (size_t b = 0; b + 1 < batches.size(); ++b) {
+    const uint32_t first = uint32_t(batchVertexSlot_.size());
+    for (uint32_t i = batches[b]; i < batches[b + 1]; ++i) {
+      const uint32_t id = faceOrder[i], k = id / nf, f = id % nf;
+      for (uint32_t c = mesh.faceStart[f]; c < mesh.faceStart[f + 1]; ++c) {
+        const size_t vertex = size_t(k) * slots + cornerSlots_[c];
+        if (seen[vertex] != b) {
+          seen[vertex] = uint32_t(b);
+          localOf[vertex] = uint32_t(batchVertexSlot_.size()) - first;
+          batchVertexSlot_.push_back(cornerSlots_[c]);
+          batchVertexInstance_.push_back(k);
+        }
+        batchCorners_.push_back(localOf[vertex]);
+      }
+    }
+    batchVertexStart_.push_back(uint32_t(batchVertexSlot_.size()));
+    batchCornerStart_.push_back(uint32_t(batchCorners_.size()));
+  }
 }
 
 Vec4 FaceTransformer::clipOf(size_t vertex) const {
-  const size_t slots = slotPositions_.size();
-  const Vec3& p = slotPositions_[vertex % slots];
-  return mvp_[vertex / slots] * Vec4(p[0], p[1], p[2], 1.0);
+  size_t slot = 0, instance = 0;
+  if (view_.slot) {
+    slot = view_.slot[vertex];
+    instance = view_.instance[vertex];
+  } else {
+    const size_t slots = slotPositions_.size();
+    slot = vertex % slots;
+    instance = vertex / slots;
+  }
+  const Vec3& p = slotPositions_[slot];
+  return mvp_[instance] * Vec4(p[0], p[1], p[2], 1.0);
 }
 
 void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex) {
   // The same product as clipOf(vertex).
   const Vec4 c = mvp * Vec4(position[0], position[1], position[2], 1.0);
-  VertexState& v = state_[vertex];
+  VertexState& v = view_.state[vertex];
   v.frame = frame_;
   if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]))) {
     v.code = kNotFinite;
@@ -76,7 +127,7 @@ void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_
            (c[2] < -c[3]) << 4 | (c[2] > c[3]) << 5;
   if (v.code & (kNear | kFar)) return;
   const Vec3 window = clipToWindow(c, width_, height_);
-  vertexWindow_[vertex] = window;
+  view_.window[vertex] = window;
   const double guard = kGuardBand / scale_;
   if (std::abs(window[0]) > guard || std::abs(window[1]) > guard) {
     v.code |= kGuard;
@@ -93,6 +144,7 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
   const size_t total = slots * scene_.instanceCount();
   state_.resize(total);
   vertexWindow_.resize(total);
+  view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr};
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
     for (size_t v = 0; v < slots; ++v) computeVertex(mvp_[k], slotPositions_[v], k * slots + v);
   out.width = width_ * scale_;
@@ -115,6 +167,7 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
     state_.assign(slots * scene_.instanceCount(), VertexState());
     vertexWindow_.resize(slots * scene_.instanceCount());
   }
+  view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr};
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
   out.width = width_ * scale_;
@@ -123,9 +176,34 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   const uint32_t* slot = cornerSlots_.data() + mesh.faceStart[f];
   const FaceCorners corners{slot, uint32_t(k * slots)};
   for (uint32_t i = 0; i < n; ++i)
-    if (state_[corners[i]].frame != frame_)
+    if (view_.state[corners[i]].frame != frame_)
       computeVertex(mvp_[k], slotPositions_[slot[i]], corners[i]);
   appendFace(faceId, corners, n, out);
+}
+
+void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
+  const Mesh& mesh = *scene_.mesh;
+  const uint32_t v0 = batchVertexStart_[batch], v1 = batchVertexStart_[batch + 1];
+  const uint32_t count = v1 - v0;
+  if (batchState_.size() < count) {
+    batchState_.resize(count);
+    batchWindow_.resize(count);
+  }
+  view_ = VertexView{batchState_.data(), batchWindow_.data(), batchVertexSlot_.data() + v0,
+                     batchVertexInstance_.data() + v0};
+  for (uint32_t i = 0; i < count; ++i)
+    computeVertex(mvp_[view_.instance[i]], slotPositions_[view_.slot[i]], i);
+  out.width = width_ * scale_;
+  out.height = height_ * scale_;
+  const uint32_t nf = uint32_t(mesh.faceCount());
+  const uint32_t* local = batchCorners_.data() + batchCornerStart_[batch];
+  for (uint32_t i = batchFaceStart_[batch]; i < batchFaceStart_[batch + 1]; ++i) {
+    const uint32_t faceId = batchFaces_[i];
+    // The stored count spares a division on the face's path (0: too many to store).
+    const uint32_t n = batchFaceCorners_[i] ? batchFaceCorners_[i] : mesh.cornerCount(faceId % nf);
+    appendFace(faceId, FaceCorners{local, 0}, n, out);
+    local += n;
+  }
 }
 
 namespace {
@@ -218,8 +296,8 @@ void FaceTransformer::appendFace(uint32_t faceId, FaceCorners corners, uint32_t 
   }
   uint32_t all = ~0u, any = 0;
   for (uint32_t i = 0; i < n; ++i) {
-    all &= state_[corners[i]].code;
-    any |= state_[corners[i]].code;
+    all &= view_.state[corners[i]].code;
+    any |= view_.state[corners[i]].code;
   }
   if (any & kNotFinite) {
     counters.degenerate += pieces;
@@ -240,7 +318,7 @@ void FaceTransformer::appendFace(uint32_t faceId, FaceCorners corners, uint32_t 
   // Every corner inside near/far and the guard band, already snapped.
   snapped_.clear();
   for (uint32_t i = 0; i < n; ++i) {
-    const FixedPoint& p = state_[corners[i]].snapped;
+    const FixedPoint& p = view_.state[corners[i]].snapped;
     if (snapped_.empty() || p != snapped_.back()) snapped_.push_back(p);
   }
   // Back faces are known from the snapped corners alone: decide before the plane's divisions.
@@ -252,7 +330,7 @@ void FaceTransformer::appendFace(uint32_t faceId, FaceCorners corners, uint32_t 
     }
   }
   window_.resize(n);
-  for (uint32_t i = 0; i < n; ++i) window_[i] = vertexWindow_[corners[i]];
+  for (uint32_t i = 0; i < n; ++i) window_[i] = view_.window[corners[i]];
   bool ok = false;
   const DepthPlane plane = planeOf(window_.data(), n, ok);
   if (!ok) {
@@ -266,9 +344,9 @@ void FaceTransformer::appendTriangle(uint32_t faceId, FaceCorners corners, Frame
   // The common case, kept short: a triangle inside near/far and the guard band. Same result
   // as appendSnappedFace() would give, without its scratch buffers.
   TransformCounters& counters = out.counters;
-  const FixedPoint& a = state_[corners[0]].snapped;
-  const FixedPoint& b = state_[corners[1]].snapped;
-  const FixedPoint& c = state_[corners[2]].snapped;
+  const FixedPoint& a = view_.state[corners[0]].snapped;
+  const FixedPoint& b = view_.state[corners[1]].snapped;
+  const FixedPoint& c = view_.state[corners[2]].snapped;
   const int64_t area = orient2d(a, b, c);
   if (area == 0) {
     counters.degenerate += 1;
@@ -280,8 +358,8 @@ void FaceTransformer::appendTriangle(uint32_t faceId, FaceCorners corners, Frame
     counters.backfaceCulled += 1;
     return;
   }
-  const Vec3 window[3] = {vertexWindow_[corners[0]], vertexWindow_[corners[1]],
-                          vertexWindow_[corners[2]]};
+  const Vec3 window[3] = {view_.window[corners[0]], view_.window[corners[1]],
+                          view_.window[corners[2]]};
   bool ok = false;
   const DepthPlane plane = planeOf(window, 3, ok);
   if (!ok) {
@@ -300,7 +378,7 @@ void FaceTransformer::appendClippedFace(uint32_t faceId, FaceCorners corners, ui
   uint32_t any = 0;
   for (uint32_t i = 0; i < n; ++i) {
     faceClip_[i] = clipOf(corners[i]);
-    any |= state_[corners[i]].code;
+    any |= view_.state[corners[i]].code;
   }
   const Vec4* poly = faceClip_.data();
   uint32_t count = n;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
 
 namespace zrender {
 
@@ -78,10 +79,31 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
   return pyramid.occludes(int(minX), int(minY), int(maxX), int(maxY), key, kNodeQueryNodes);
 }
 
+void OctreeAlgorithm::prepare(const Scene& scene) {
+  octree_.build(scene);
+  // The leaves' face ranges follow one another in octree_.faces() (the tree is built in
+  // Morton order), so they are the batches in that order.
+  const std::vector<OctreeNode>& nodes = octree_.nodes();
+  std::vector<uint32_t> leaves;
+  for (uint32_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i].childMask == 0) leaves.push_back(i);
+  std::sort(leaves.begin(), leaves.end(),
+            [&](uint32_t a, uint32_t b) { return nodes[a].faceBegin < nodes[b].faceBegin; });
+  batches_.assign(1, 0);
+  leafBatch_.assign(nodes.size(), 0);
+  for (uint32_t leaf : leaves) {
+    if (nodes[leaf].faceBegin != batches_.back())
+      throw std::logic_error("octree leaves do not tile the face list");
+    leafBatch_[leaf] = uint32_t(batches_.size() - 1);
+    batches_.push_back(nodes[leaf].faceEnd);
+  }
+  if (batches_.back() != octree_.faces().size())
+    throw std::logic_error("octree leaves do not tile the face list");
+}
+
 void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   rasterizer_.begin(fb);
   const std::vector<OctreeNode>& nodes = octree_.nodes();
-  const std::vector<uint32_t>& faces = octree_.faces();
   FrameGeometry& g = input.geometry;
   const Camera& camera = input.camera;
   const OctreeNodeTest test(camera, fb.width(), fb.height());
@@ -90,7 +112,8 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   stack_.clear();
   if (!nodes.empty()) stack_.push_back(0);
   while (!stack_.empty()) {
-    const OctreeNode& node = nodes[stack_.back()];
+    const uint32_t nodeIndex = stack_.back();
+    const OctreeNode& node = nodes[nodeIndex];
     stack_.pop_back();
     ++stats.octreeNodesVisited;
     if (test.hidden(node, rasterizer_.pyramid())) {
@@ -100,8 +123,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
     if (node.childMask == 0) {
       const double t0 = nowMilliseconds();
       const size_t firstTriangle = g.triangles.size();
-      for (uint32_t i = node.faceBegin; i < node.faceEnd; ++i)
-        input.transformer.transformFace(faces[i], g);
+      input.transformer.transformBatch(leafBatch_[nodeIndex], g);
       stats.lazyTransformMs += nowMilliseconds() - t0;
       // The leaf's screen region was usually not drawn recently: fetch the buffer rows of a
       // triangle a few places ahead while drawing.

@@ -33,7 +33,7 @@ Renderer::Renderer(const Scene& scene, const std::string& algorithm)
       transformer_(scene, sampleScale_, scene.settings.cull) {
   const double t0 = nowMs();
   algorithm_->prepare(scene);
-  transformer_.prepare(algorithm_->faceOrder());
+  transformer_.prepare(algorithm_->faceOrder(), algorithm_->faceBatches());
   prepareMs_ = nowMs() - t0;
 }
 

@@ -205,6 +205,109 @@ TEST(DepthPyramidTest, NodesBoundTheBufferAfterRandomWrites) {
   EXPECT_GT(rejected, 0);
 }
 
+// A floor of n x n cells rising 0.05 per row, from z = -6 (far) to z = 4 (behind a tiny
+// scene's eye), x in [-6, 6] (past the image's sides): quads, or with `mixed` two triangles in
+// two cells of three.
+void addTiltedFloor(int n, bool mixed, std::vector<Vec3>& p, std::vector<std::vector<int>>& f) {
+  const int b = int(p.size());
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      p.emplace_back(-6.0 + 12.0 * i / n, -0.6 + 0.05 * j, -6.0 + 10.0 * j / n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = b + j * (n + 1) + i;
+      if (mixed && (i + j) % 3 != 0) {
+        f.push_back({a, a + 1, a + n + 2});
+        f.push_back({a, a + n + 2, a + n + 1});
+      } else {
+        f.push_back({a, a + 1, a + n + 2, a + n + 1});
+      }
+    }
+}
+
+// Geometry as bytes-comparable fields: faces, vertices, triangles (corners, face, id, plane)
+// and the counters.
+void expectSameGeometry(const FrameGeometry& a, const FrameGeometry& b, const std::string& what) {
+  ASSERT_EQ(a.faces.size(), b.faces.size()) << what;
+  ASSERT_EQ(a.triangles.size(), b.triangles.size()) << what;
+  ASSERT_EQ(a.vertices.size(), b.vertices.size()) << what;
+  for (size_t i = 0; i < a.faces.size(); ++i) {
+    const ScreenFace &x = a.faces[i], &y = b.faces[i];
+    EXPECT_TRUE(x.id == y.id && x.firstVertex == y.firstVertex && x.vertexCount == y.vertexCount &&
+                x.firstTriangle == y.firstTriangle && x.triangleCount == y.triangleCount &&
+                x.frontFacing == y.frontFacing)
+        << what << ", face " << i;
+  }
+  for (size_t i = 0; i < a.vertices.size(); ++i) EXPECT_EQ(a.vertices[i], b.vertices[i]) << what;
+  for (size_t i = 0; i < a.triangles.size(); ++i) {
+    const ScreenTriangle &x = a.triangles[i], &y = b.triangles[i];
+    EXPECT_TRUE(x.v[0] == y.v[0] && x.v[1] == y.v[1] && x.v[2] == y.v[2] && x.face == y.face &&
+                x.id == y.id && x.plane.a == y.plane.a && x.plane.b == y.plane.b &&
+                x.plane.c == y.plane.c && x.plane.loBits == y.plane.loBits &&
+                x.plane.hiBits == y.plane.hiBits)
+        << what << ", triangle " << i;
+  }
+  EXPECT_EQ(a.counters.backfaceCulled, b.counters.backfaceCulled) << what;
+  EXPECT_EQ(a.counters.clippedAway, b.counters.clippedAway) << what;
+  EXPECT_EQ(a.counters.degenerate, b.counters.degenerate) << what;
+}
+
+TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
+  // Quads and a concave polygon, on a floor that crosses the near plane and leaves the image,
+  // in a grid of 3 x 1 x 2 instances; faces in a shuffled order cut into batches of random
+  // sizes, two frames from different eyes. Each batch computes its own vertices, so a vertex
+  // shared by batches is computed several times: every face must still come out as when it is
+  // transformed on its own with the whole model's vertices.
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  addTiltedFloor(12, true, p, f);
+  const int b = int(p.size());
+  p.insert(p.end(), {{-1.8, -1.0, 0.0},
+                     {0.0, -1.6, 0.0},
+                     {1.6, -1.0, 0.0},
+                     {0.5, -0.8, -0.9},
+                     {1.4, 0.8, 0.0},
+                     {0.0, 0.1, 0.9},
+                     {-1.4, 0.8, -0.4}});
+  f.push_back({b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6});
+  f.push_back({b + 6, b + 5, b + 4, b + 3, b + 2, b + 1, b});
+  f.push_back({b, b, b + 1});  // snaps to fewer than three corners
+  SceneSettings s = test::tinySettings(90);
+  s.grid = Grid{{3, 1, 2}, {4.0, 0.0, 5.0}};
+  Warnings warnings;
+  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+
+  std::mt19937 rng(7);
+  std::vector<uint32_t> order(scene.faceCount());
+  for (uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), rng);
+  std::vector<uint32_t> batches = {0};
+  while (batches.back() < order.size())
+    batches.push_back(std::min(uint32_t(order.size()), batches.back() + 1 + uint32_t(rng() % 40)));
+
+  for (bool cull : {true, false}) {
+    FaceTransformer byFace(scene, 1, cull), byBatch(scene, 1, cull);
+    byFace.prepare(&order);
+    byBatch.prepare(&order, &batches);
+    for (const Vec3& eye : {Vec3(0.3, 0.2, 1.0), Vec3(-0.5, -0.3, 2.5)}) {
+      SceneSettings view = s;
+      view.eye = eye;
+      const Camera camera = makeCamera(makeScene(view, scene.mesh, warnings));
+      byFace.beginFrame(camera);
+      byBatch.beginFrame(camera);
+      FrameGeometry expected, actual;
+      for (uint32_t id : order) byFace.transformFace(id, expected);
+      for (uint32_t batch = 0; batch + 1 < batches.size(); ++batch)
+        byBatch.transformBatch(batch, actual);
+      // Not vacuous: many faces went through the whole path, some were clipped or dropped.
+      EXPECT_GT(expected.triangles.size() + expected.counters.backfaceCulled, 300u);
+      EXPECT_GT(expected.triangles.size(), 0u);
+      EXPECT_GT(expected.counters.clippedAway + expected.counters.degenerate, 0u);
+      expectSameGeometry(expected, actual, cull ? "culling" : "no culling");
+    }
+  }
+}
+
 TEST(OctreeTest, EveryFaceOnceAndInsideItsNodes) {
   // Three instances of a random soup, rotated: every face id appears once, every node's box
   // holds its faces' corners, and children split their parent's face range.
@@ -377,15 +480,7 @@ TEST(HierarchicalExactTest, NearPlaneAndOffScreen) {
   // posts standing on it; and the bunny seen from inside itself.
   std::vector<Vec3> p;
   std::vector<std::vector<int>> f;
-  const int n = 24;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      p.emplace_back(-6.0 + 12.0 * i / n, -0.6 + 0.05 * j, -6.0 + 10.0 * j / n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      f.push_back({a, a + 1, a + n + 2, a + n + 1});
-    }
+  addTiltedFloor(24, false, p, f);
   for (int k = 0; k < 6; ++k) {
     const int b = int(p.size());
     const double x = -2.5 + k, z = -3.0 + 0.8 * k;

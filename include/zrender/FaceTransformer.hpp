@@ -24,7 +24,10 @@ class FaceTransformer {
   // Nothing drawn depends on that order, but faces read their vertices by it: in first-use
   // order consecutive faces find theirs in cache (scanned models such as the bunny list
   // vertices in an order unrelated to their faces).
-  void prepare(const std::vector<uint32_t>* faceOrder = nullptr);
+  // With `batches` too (ascending offsets into faceOrder, first 0, last its size): batch b is
+  // faces (*faceOrder)[batches[b], batches[b + 1]), for transformBatch().
+  void prepare(const std::vector<uint32_t>* faceOrder = nullptr,
+               const std::vector<uint32_t>* batches = nullptr);
 
   // Takes the frame's camera and forgets the vertices of the previous frame. The per-vertex
   // storage is kept from frame to frame: for a model of millions of vertices, allocating and
@@ -38,6 +41,12 @@ class FaceTransformer {
   // algorithms that skip most of the model (the octree). Gives the same result as
   // transformAll() for that face.
   void transformFace(uint32_t faceId, FrameGeometry& out);
+
+  // The faces of one batch of prepare(), in order, with the same result as transformFace() for
+  // each. The batch computes its own vertices into a small local array, so faces find them in
+  // cache whatever the size of the model; a vertex shared by two batches is computed twice.
+  // For algorithms that draw a model in spatially compact groups (the octree's leaves).
+  void transformBatch(uint32_t batch, FrameGeometry& out);
 
   const Mat4& modelViewProjection(uint32_t instance) const { return mvp_[instance]; }
   int sampleScale() const { return scale_; }
@@ -64,10 +73,21 @@ class FaceTransformer {
   };
   static constexpr uint32_t kNeedsClip = kNear | kFar | kGuard | kNotFinite;
 
-  // Vertices are numbered instance-major: index = instance * slots + slot.
+  // The vertices faces read: the whole model's (numbered instance-major: index = instance *
+  // slots + slot; `slot` and `instance` null) or one batch's (local numbers, with their slot and
+  // instance).
+  struct VertexView {
+    VertexState* state;
+    Vec3* window;
+    const uint32_t* slot;
+    const uint32_t* instance;
+  };
+
+  void prepareBatches(const std::vector<uint32_t>& faceOrder, const std::vector<uint32_t>& batches);
   Vec4 clipOf(size_t vertex) const;
   void computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex);
-  // The vertices of a face's corners: the mesh's slots plus its instance's first vertex.
+  // The vertices of a face's corners in view_: the mesh's slots plus its instance's first
+  // vertex, or a batch's local numbers (base 0).
   struct FaceCorners {
     const uint32_t* slots;
     uint32_t base;
@@ -92,6 +112,15 @@ class FaceTransformer {
   std::vector<VertexState> state_;     // per vertex
   std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth; valid like `snapped`
   uint32_t frame_ = 0;
+  VertexView view_{nullptr, nullptr, nullptr, nullptr};
+  // Batches (prepareBatches): per batch b, faces batchFaces_[batchFaceStart_[b], ...[b + 1]),
+  // their vertices (slot and instance) from batchVertexStart_[b], and their corners' local
+  // vertex numbers, face after face, from batchCornerStart_[b].
+  std::vector<uint32_t> batchFaces_, batchFaceStart_, batchVertexStart_, batchCornerStart_;
+  std::vector<uint32_t> batchVertexSlot_, batchVertexInstance_, batchCorners_;
+  std::vector<uint8_t> batchFaceCorners_;  // per batch face: its corner count, 0 if > 255
+  std::vector<VertexState> batchState_;    // the batch being transformed, by local number
+  std::vector<Vec3> batchWindow_;
   // Scratch buffers reused face after face.
   std::vector<Vec4> faceClip_, clipped_, clipScratch_;
   std::vector<Vec3> window_, guarded_, guardScratch_;

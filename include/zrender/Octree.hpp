@@ -33,12 +33,15 @@ struct OctreeNode {
 // frame; with tight bounds every face is tested at leaf granularity, and the build is a radix
 // sort plus one recursive pass over contiguous arrays (no per-node lists).
 //
-// Leaf size, measured on `crowd`: at most 16 faces per leaf transforms 313K faces per frame
-// with 101K node tests, 64 transforms 352K with 35K tests, 256 transforms 426K with 12K.
+// Leaf size, measured on `crowd` with leaves transformed as batches (transformBatch): frame ms,
+// medians of 5 runs alternated in one series, then node tests and faces transformed per frame.
+// At most 16 faces per leaf: 68.0 ms (119K, 381K); 32: 56.3 (46K, 410K); 64: 55.1 (39K, 419K);
+// 128: 51.3 (16K, 475K). A second series: 128: 49.8; 256: 50.4 (13K, 492K); 512: 51.2. Bigger
+// leaves cull a little less but cost fewer node tests, and their batches share fewer vertices.
 class Octree {
  public:
-  static constexpr int kMaxDepth = 10;        // 2^10 cells per axis: 30-bit Morton codes
-  static constexpr uint32_t kLeafFaces = 64;  // a node with at most this many faces is a leaf
+  static constexpr int kMaxDepth = 10;         // 2^10 cells per axis: 30-bit Morton codes
+  static constexpr uint32_t kLeafFaces = 128;  // a node with at most this many faces is a leaf
 
   // Builds the octree over scene.faceCount() faces (id = instance * mesh faces + face).
   void build(const Scene& scene);

@@ -36,9 +36,11 @@ class OctreeNodeTest {
 class OctreeAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "octree"; }
-  void prepare(const Scene& scene) override { octree_.build(scene); }
+  void prepare(const Scene& scene) override;
   bool transformsAll() const override { return false; }
   const std::vector<uint32_t>* faceOrder() const override { return &octree_.faces(); }
+  // One batch per leaf.
+  const std::vector<uint32_t>* faceBatches() const override { return &batches_; }
   void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
 
   const Octree& octree() const { return octree_; }
@@ -46,7 +48,9 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
  private:
   Octree octree_;
   HzbRasterizer rasterizer_;
-  std::vector<uint32_t> stack_;  // nodes still to visit, nearest on top
+  std::vector<uint32_t> stack_;      // nodes still to visit, nearest on top
+  std::vector<uint32_t> batches_;    // leaf boundaries in octree_.faces(), in order
+  std::vector<uint32_t> leafBatch_;  // per node: its batch, for leaves
 };
 
 }  // namespace zrender

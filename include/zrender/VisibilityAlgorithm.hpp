@@ -53,6 +53,9 @@ class VisibilityAlgorithm {
   // After prepare(): the order in which the algorithm usually transforms faces (global face
   // ids), for the transformer to lay vertices out by; null for face id order.
   virtual const std::vector<uint32_t>* faceOrder() const { return nullptr; }
+  // With faceOrder(): the groups in which the algorithm transforms faces
+  // (FaceTransformer::transformBatch), as offsets into faceOrder(); null for none.
+  virtual const std::vector<uint32_t>* faceBatches() const { return nullptr; }
   // `fb` is sized to geometry's sample size but not cleared: clearing is part of the work.
   virtual void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) = 0;
 };
