@@ -246,7 +246,8 @@ void pushFace(uint32_t faceId, const DepthPlane& plane, bool frontFacing, const 
   face.triangleCount = pieceCount;
   face.frontFacing = frontFacing;
   const uint32_t faceIndex = uint32_t(out.faces.size());
-  out.vertices.insert(out.vertices.end(), corners, corners + cornerCount);
+  // One by one: the range insert is a call, and faces have few corners.
+  for (uint32_t i = 0; i < cornerCount; ++i) out.vertices.push_back(corners[i]);
   for (uint32_t i = 0; i < pieceCount; ++i) {
     const std::array<uint32_t, 3>& t = pieces[i];
     out.triangles.push_back(

@@ -47,10 +47,4 @@ FitView fitView(double radius, double fovyDegrees, double aspect) {
   return FitView{distance, std::max(distance - r, distance * 1e-3), distance + r};
 }
 
-Vec3 clipToWindow(const Vec4& clip, int width, int height) {
-  const double invW = 1.0 / clip[3];
-  const double xNdc = clip[0] * invW, yNdc = clip[1] * invW, zNdc = clip[2] * invW;
-  return Vec3((xNdc + 1.0) * 0.5 * width, (1.0 - yNdc) * 0.5 * height, (zNdc + 1.0) * 0.5);
-}
-
 }  // namespace zrender

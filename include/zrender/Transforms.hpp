@@ -28,7 +28,12 @@ FitView fitView(double radius, double fovyDegrees, double aspect);
 
 // Window position of a clip-space point with w > 0, in pixels: x right, y down, row 0 at the
 // top (SPEC §4); z is window depth in 0..1, smaller is nearer.
-Vec3 clipToWindow(const Vec4& clip, int width, int height);
+// Inline: the transform runs it for every vertex of a frame.
+inline Vec3 clipToWindow(const Vec4& clip, int width, int height) {
+  const double invW = 1.0 / clip[3];
+  const double xNdc = clip[0] * invW, yNdc = clip[1] * invW, zNdc = clip[2] * invW;
+  return Vec3((xNdc + 1.0) * 0.5 * width, (1.0 - yNdc) * 0.5 * height, (zNdc + 1.0) * 0.5);
+}
 
 inline Vec3 transformPoint(const Mat4& m, const Vec3& p) {
   const Vec4 r = m * Vec4(p[0], p[1], p[2], 1.0);
