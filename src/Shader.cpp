@@ -120,20 +120,20 @@ Shader::Shader(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode
 }
 
 uint32_t Shader::faceColor(uint32_t faceId) {
-  FaceCache& entry = cache_[faceId];
-  if (entry.stamp == frame_) return entry.data;
+  // Colors of the id alone: a few operations, cheaper than a look-up in a table of every face.
+  if (mode_ == ShadingMode::Id) {
+    const uint32_t v = faceId + 1;  // R = low byte, G = middle, B = high (SPEC §6)
+    return ((v & 0xFF) << 16) | (((v >> 8) & 0xFF) << 8) | ((v >> 16) & 0xFF);
+  }
+  if (mode_ == ShadingMode::Random) return randomFaceColor(faceId);
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   const uint32_t instance = faceId / nf, local = faceId % nf;
+  // Normal colors of instances that share their rotation are those of the mesh face: one
+  // entry per mesh face, which stays in cache where one per face of a big grid does not.
+  FaceCache& entry = cache_[mode_ == ShadingMode::Normal && sharedRotation_ ? local : faceId];
+  if (entry.stamp == frame_) return entry.data;
   uint32_t color = 0;
   switch (mode_) {
-    case ShadingMode::Id: {
-      const uint32_t v = faceId + 1;  // R = low byte, G = middle, B = high (SPEC §6)
-      color = ((v & 0xFF) << 16) | (((v >> 8) & 0xFF) << 8) | ((v >> 16) & 0xFF);
-      break;
-    }
-    case ShadingMode::Random:
-      color = randomFaceColor(faceId);
-      break;
     case ShadingMode::Normal: {
       // Rigid transform of a unit (or zero) normal: no renormalization needed.
       const Vec3 n = transformDirection(modelView_[instance], faceNormals_[local]);
@@ -295,6 +295,11 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   modelView_.clear();
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
     modelView_.push_back(camera.view * scene_.modelMatrix(k));
+  sharedRotation_ = true;
+  for (const Mat4& mv : modelView_)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        sharedRotation_ = sharedRotation_ && mv(i, j) == modelView_[0](i, j);
 
   const auto& bg = scene_.settings.background;
   background_ = (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
@@ -390,13 +395,13 @@ void Shader::shadePixelRows(int endRow) {
     return;
   }
   if (perFace_) {
-    const uint32_t background = background_, frame = frame_;
-    const FaceCache* cache = cache_.data();
+    const uint32_t background = background_;
+    uint32_t lastId = kBackgroundId, lastColor = background;
     shadeRows(fb, firstRow, endRow, background, color, [&](DepthKey key) {
       const uint32_t id = keyFaceId(key);
-      if (id == kBackgroundId) return background;
-      const FaceCache& entry = cache[id];
-      return entry.stamp == frame ? entry.data : faceColor(id);
+      if (id == lastId) return lastColor;  // a face usually covers a few pixels in a row
+      lastId = id;
+      return lastColor = id == kBackgroundId ? background : faceColor(id);
     });
     return;
   }

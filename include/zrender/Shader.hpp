@@ -70,6 +70,8 @@ class Shader {
   uint32_t background_ = 0;
   const FrameGeometry* geometry_ = nullptr;
   bool perFace_ = false;  // one sample per pixel, one color per face
+  // Every instance's model-view rotation (3 x 3) equals the first one's, as for grids.
+  bool sharedRotation_ = false;
   enum class TableState { Undecided, On, Off } tableState_ = TableState::Undecided;
   size_t tableFaces_ = 0;  // geometry faces whose colors colorTable_ holds
   float depthLo_ = 0.0f;   // depth mode: the frame's depth range
