@@ -171,10 +171,11 @@ TEST(Shading, FlatModeIsTheLambertTermSeenFromTheCentroid) {
 
 TEST(Shading, GridInstancesGetTheirOwnFaceColors) {
   // A 2 x 2 pixel square repeated 5 x 5 (spacing 0.75, three pixels) in a 16 x 16 image, where
-  // world x maps to pixel column 4x + 8 and y to row 8 - 4y. 25 faces for 256 pixels: colors
-  // are found face by face as pixels meet them (no table of the frame's faces). Flat shading
-  // differs per instance (the light is at the eye, seen from each centroid); normal shading is
-  // the same for all (one rotation); id and random follow the instance's face id.
+  // world x maps to pixel column 4x + 8 and y to row 8 - 4y. 25 faces for 256 pixels are too
+  // many for a table of the frame's faces: flat colors are found as pixels meet them, normal
+  // ones come from a table of the mesh's faces. Flat shading differs per instance (the light
+  // is at the eye, seen from each centroid); normal shading is the same for all (one
+  // rotation); id and random follow the instance's face id.
   auto mesh = test::makeMesh(
       {{-0.25, -0.25, 0}, {0.25, -0.25, 0}, {0.25, 0.25, 0}, {-0.25, 0.25, 0}}, {{0, 1, 2, 3}});
   SceneSettings s = test::tinySettings(16);

@@ -49,8 +49,9 @@ class Shader {
   };
 
   uint32_t faceColor(uint32_t faceId);
-  uint32_t sampleColor(DepthKey key, int x, int y);  // 0x00RRGGBB; x, y in samples
-  void shadePixelRows(int endRow);                   // rows [shadedRows_, endRow) of the image
+  uint32_t normalColor(const Mat4& modelView, uint32_t local) const;  // packed, mesh face
+  uint32_t sampleColor(DepthKey key, int x, int y);                   // 0x00RRGGBB; x, y in samples
+  void shadePixelRows(int endRow);  // rows [shadedRows_, endRow) of the image
   void prepareTable();  // decides on colorTable_ and brings it up to date with the geometry
   uint32_t faceShadeIndex(uint32_t faceId);
   cv::Vec3b shadeSample(uint32_t faceId, const Vec3& rayDir);
@@ -72,7 +73,9 @@ class Shader {
   bool perFace_ = false;  // one sample per pixel, one color per face
   // Every instance's model-view rotation (3 x 3) equals the first one's, as for grids.
   bool sharedRotation_ = false;
-  enum class TableState { Undecided, On, Off } tableState_ = TableState::Undecided;
+  // On: colorTable_ by face id; MeshFaces: meshColors_ by mesh face (normal mode, shared
+  // rotation); Off: computed on first sight.
+  enum class TableState { Undecided, On, MeshFaces, Off } tableState_ = TableState::Undecided;
   size_t tableFaces_ = 0;  // geometry faces whose colors colorTable_ holds
   float depthLo_ = 0.0f;   // depth mode: the frame's depth range
   double depthRange_ = 1.0;
@@ -80,6 +83,7 @@ class Shader {
   uint32_t frame_ = 0;
   std::vector<FaceCache> cache_;
   std::vector<uint32_t> colorTable_;  // [0] background, [id + 1] face color (one color per face)
+  std::vector<uint32_t> meshColors_;  // per mesh face: its normal color (TableState::MeshFaces)
   std::vector<FaceShade> faceShade_;
   std::vector<Vec3> cornerPos_, cornerNormal_;
   std::vector<cv::Vec2d> cornerUv_;
