@@ -155,6 +155,36 @@ TEST(HzbRasterizerTest, RejectsWhatIsBehindAndKeepsTies) {
   }
 }
 
+TEST(HzbRasterizerTest, BigTriangleWhoseNearCornerIsOffScreenIsRejectedByItsPlane) {
+  // A wall at depth 0.5 over the whole image, then a triangle reaching far to the right of it
+  // whose depth falls from 0.98 at x = 10 to 0.2 at x = 400: its nearest corner (0.2) is in
+  // front of the wall, but in the image (x < 64) it is behind (depth > 0.87), which only its
+  // plane over its sample bounds in the image shows.
+  FrameBuffer fb;
+  fb.resize(64, 48);
+  HzbRasterizer r;
+  r.begin(fb);
+  RenderStats stats;
+  r.drawTriangle(makeTriangle(0, 0, 64, 0, 64, 48, 7, 0.5), stats);
+  r.drawTriangle(makeTriangle(0, 0, 64, 48, 0, 48, 7, 0.5), stats);
+  ScreenTriangle t = makeTriangle(10, 5, 400, 5, 10, 40, 3, 0.0);
+  t.plane.a = -0.002;
+  t.plane.c = 1.0;
+  t.plane.loBits = int32_t(floatBits(0.19f));
+  t.plane.hiBits = int32_t(floatBits(0.99f));
+  const uint64_t tested = stats.pixelsTested;
+  r.drawTriangle(t, stats);
+  EXPECT_EQ(stats.trianglesHzbCulled, 1u);
+  EXPECT_EQ(stats.pixelsTested, tested);
+  // Nearer than the wall in the image (0.3 at its left end): drawn.
+  t.plane.c = 0.3;
+  t.plane.loBits = int32_t(floatBits(0.0f));
+  r.drawTriangle(t, stats);
+  EXPECT_EQ(stats.trianglesHzbCulled, 1u);
+  r.finish();
+  EXPECT_EQ(keyFaceId(fb.row(10)[20]), 3u);
+}
+
 TEST(DepthPyramidTest, NodesBoundTheBufferAfterRandomWrites) {
   // Random triangles at random depths on buffers of awkward sizes (partial tiles, a single
   // tile, one row of tiles), then pyramid queries over random rectangles against a
