@@ -37,8 +37,9 @@ class FaceTransformer {
   // Every face of every instance, in face id order.
   void transformAll(FrameGeometry& out);
 
-  // One face (global id); its vertices are transformed on first use in this frame. For
-  // algorithms that skip most of the model (the octree). Gives the same result as
+  // One face (global id); its vertices are transformed on first use in this frame, into
+  // per-vertex state for the whole model. For callers that pick faces one at a time; the octree
+  // uses transformBatch(), whose tests check it against this. Gives the same result as
   // transformAll() for that face.
   void transformFace(uint32_t faceId, FrameGeometry& out);
 

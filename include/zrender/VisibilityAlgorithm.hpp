@@ -20,7 +20,8 @@ struct FrameInput {
   const Camera& camera;
   FaceTransformer& transformer;
   // Every face transformed, in id order, when the algorithm asked for it (transformsAll());
-  // otherwise empty and the algorithm calls transformer.transformFace() as it goes.
+  // otherwise empty and the algorithm transforms faces as it goes (transformer.transformBatch()
+  // or transformFace()), timing that in RenderStats::lazyTransformMs.
   FrameGeometry& geometry;
   // Called by algorithms that finish rows in order (top to bottom), with n when sample rows
   // [0, n) hold their final keys, so that they are shaded while still in cache instead of
