@@ -4,12 +4,13 @@
 #include <cmath>
 
 #include "zrender/Clipping.hpp"
+#include "zrender/CpuFeatures.hpp"
 #include "zrender/Triangulation.hpp"
 
 namespace zrender {
 
 FaceTransformer::FaceTransformer(const Scene& scene, int sampleScale, bool cull)
-    : scene_(scene), scale_(sampleScale), cull_(cull) {}
+    : scene_(scene), scale_(sampleScale), avx2_(cpuHasAvx2()), cull_(cull) {}
 
 FaceTransformer::FaceTransformer(const Scene& scene, const Camera& camera, int sampleScale,
                                  bool cull)
@@ -20,6 +21,7 @@ FaceTransformer::FaceTransformer(const Scene& scene, const Camera& camera, int s
 void FaceTransformer::beginFrame(const Camera& camera) {
   width_ = camera.width;
   height_ = camera.height;
+  viewport_ = VertexViewport{width_, height_, scale_};
   const Mat4 viewProjection = camera.projection * camera.view;
   mvp_.clear();
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
@@ -116,25 +118,7 @@ Vec4 FaceTransformer::clipOf(size_t vertex) const {
 
 void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex) {
   // The same product as clipOf(vertex).
-  const Vec4 c = mvp * Vec4(position[0], position[1], position[2], 1.0);
-  VertexState& v = view_.state[vertex];
-  v.frame = frame_;
-  if (!(std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]) && std::isfinite(c[3]))) {
-    v.code = kNotFinite;
-    return;
-  }
-  v.code = (c[0] < -c[3]) | (c[0] > c[3]) << 1 | (c[1] < -c[3]) << 2 | (c[1] > c[3]) << 3 |
-           (c[2] < -c[3]) << 4 | (c[2] > c[3]) << 5;
-  if (v.code & (kNear | kFar)) return;
-  const Vec3 window = clipToWindow(c, width_, height_);
-  view_.window[vertex] = window;
-  const double guard = kGuardBand / scale_;
-  if (std::abs(window[0]) > guard || std::abs(window[1]) > guard) {
-    v.code |= kGuard;
-    return;
-  }
-  // Snap to 1/256 pixel, then scale to samples.
-  v.snapped = {snapToSubpixel(window[0]) * scale_, snapToSubpixel(window[1]) * scale_};
+  projectVertex(mvp, position, viewport_, frame_, view_.state[vertex], view_.window[vertex]);
 }
 
 void FaceTransformer::transformAll(FrameGeometry& out) {
@@ -145,8 +129,18 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
   state_.resize(total);
   vertexWindow_.resize(total);
   view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr};
-  for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
-    for (size_t v = 0; v < slots; ++v) computeVertex(mvp_[k], slotPositions_[v], k * slots + v);
+  for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
+    size_t v = 0;
+    if (avx2_) {
+      for (; v + 4 <= slots; v += 4) {
+        const Vec3* p = slotPositions_.data() + v;
+        const Vec3* const positions[4] = {p, p + 1, p + 2, p + 3};
+        projectVertices4Avx2(mvp_[k], positions, viewport_, frame_, &state_[k * slots + v],
+                             &vertexWindow_[k * slots + v]);
+      }
+    }
+    for (; v < slots; ++v) computeVertex(mvp_[k], slotPositions_[v], k * slots + v);
+  }
   out.width = width_ * scale_;
   out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
@@ -191,8 +185,25 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
   }
   view_ = VertexView{batchState_.data(), batchWindow_.data(), batchVertexSlot_.data() + v0,
                      batchVertexInstance_.data() + v0};
-  for (uint32_t i = 0; i < count; ++i)
-    computeVertex(mvp_[view_.instance[i]], slotPositions_[view_.slot[i]], i);
+  const uint32_t* slot = view_.slot;
+  const uint32_t* instance = view_.instance;
+  uint32_t i = 0;
+  if (avx2_) {
+    // Four at a time while they belong to one instance (a leaf's faces usually do).
+    for (; i + 4 <= count; i += 4) {
+      if (instance[i] != instance[i + 3] || instance[i + 1] != instance[i] ||
+          instance[i + 2] != instance[i]) {
+        for (uint32_t j = i; j < i + 4; ++j)
+          computeVertex(mvp_[instance[j]], slotPositions_[slot[j]], j);
+        continue;
+      }
+      const Vec3* const positions[4] = {&slotPositions_[slot[i]], &slotPositions_[slot[i + 1]],
+                                        &slotPositions_[slot[i + 2]], &slotPositions_[slot[i + 3]]};
+      projectVertices4Avx2(mvp_[instance[i]], positions, viewport_, frame_, &view_.state[i],
+                           &view_.window[i]);
+    }
+  }
+  for (; i < count; ++i) computeVertex(mvp_[instance[i]], slotPositions_[slot[i]], i);
   out.width = width_ * scale_;
   out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());

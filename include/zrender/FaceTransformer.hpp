@@ -6,6 +6,7 @@
 #include "zrender/Camera.hpp"
 #include "zrender/FrameGeometry.hpp"
 #include "zrender/Scene.hpp"
+#include "zrender/VertexProjection.hpp"
 
 namespace zrender {
 
@@ -53,27 +54,6 @@ class FaceTransformer {
   int sampleScale() const { return scale_; }
 
  private:
-  // What every face using a vertex (of one instance) reads first, kept small (16 bytes) so
-  // that the whole array stays in cache: faces reach their vertices in no particular order.
-  // The window position lives apart (vertexWindow_) and is read only by faces that survive culling;
-  // clip coordinates are recomputed (clipOf) by the rare faces that need clipping.
-  struct VertexState {
-    FixedPoint snapped{0, 0};  // 1/256 sample units; valid when `code` has no kNeedsClip bit
-    uint32_t code = 0;         // outcode bits below
-    uint32_t frame = 0;        // lazy mode: the frame the vertex was computed in
-  };
-  enum : uint32_t {
-    kLeft = 1,
-    kRight = 2,
-    kBelow = 4,
-    kAbove = 8,
-    kNear = 16,
-    kFar = 32,        // outside that plane
-    kNotFinite = 64,  // a coordinate is NaN or infinite: the face is skipped
-    kGuard = 128,     // inside near/far but beyond the guard band: needs the 2D clip
-  };
-  static constexpr uint32_t kNeedsClip = kNear | kFar | kGuard | kNotFinite;
-
   // The vertices faces read: the whole model's (numbered instance-major: index = instance *
   // slots + slot; `slot` and `instance` null) or one batch's (local numbers, with their slot and
   // instance).
@@ -85,6 +65,8 @@ class FaceTransformer {
   };
 
   void prepareBatches(const std::vector<uint32_t>& faceOrder, const std::vector<uint32_t>& batches);
+  // Clip coordinates, recomputed for the rare faces that need clipping (VertexState keeps
+  // only what the others read).
   Vec4 clipOf(size_t vertex) const;
   void computeVertex(const Mat4& mvp, const Vec3& position, size_t vertex);
   // The vertices of a face's corners in view_: the mesh's slots plus its instance's first
@@ -105,13 +87,15 @@ class FaceTransformer {
   const Scene& scene_;
   int width_ = 0, height_ = 0;  // pixels
   int scale_;
+  VertexViewport viewport_;
+  bool avx2_;  // vertices four at a time (projectVertices4Avx2)
   bool cull_;
   std::vector<Mat4> mvp_;  // per instance, model to clip space
   bool prepared_ = false;
   std::vector<Vec3> slotPositions_;    // model space: the positions faces use, by first use
   std::vector<uint32_t> cornerSlots_;  // per mesh corner: its position's slot
   std::vector<VertexState> state_;     // per vertex
-  std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth; valid like `snapped`
+  std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth (read by faces that survive)
   uint32_t frame_ = 0;
   VertexView view_{nullptr, nullptr, nullptr, nullptr};
   // Batches (prepareBatches): per batch b, faces batchFaces_[batchFaceStart_[b], ...[b + 1]),
