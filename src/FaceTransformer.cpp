@@ -225,8 +225,8 @@ void setDepthRange(DepthPlane& plane, const Vec3* window, uint32_t count) {
   for (uint32_t i = 1; i < count; ++i)
     lo = std::min(lo, window[i][2]), hi = std::max(hi, window[i][2]);
   float flo = static_cast<float>(std::max(lo, 0.0)), fhi = static_cast<float>(std::min(hi, 1.0));
-  if (double(flo) > lo) flo = std::nextafter(flo, 0.0f);
-  if (double(fhi) < hi) fhi = std::nextafter(fhi, 1.0f);
+  if (double(flo) > lo) flo = nextFloatTowardZero(flo);
+  if (double(fhi) < hi) fhi = nextFloatTowardOne(fhi);
   plane.loBits = int32_t(floatBits(std::max(flo, 0.0f)));
   plane.hiBits = int32_t(floatBits(std::min(fhi, 1.0f)));
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -304,6 +305,39 @@ TEST(DepthRule, ReversedSubmissionGivesTheSameBuffers) {
     if (keyFaceId(a.data()[i]) != kBackgroundId && !seen[keyFaceId(a.data()[i])])
       seen[keyFaceId(a.data()[i])] = true, ++faces;
   EXPECT_GT(faces, 50u);  // a real mix of visible faces
+}
+
+TEST(DepthRule, FloatStepsMatchNextafter) {
+  // Every sign, zeros, denormals, 1, infinities and random bit patterns of finite floats.
+  const float inf = std::numeric_limits<float>::infinity();
+  std::vector<float> values = {0.0f,
+                               -0.0f,
+                               1.0f,
+                               -1.0f,
+                               inf,
+                               -inf,
+                               std::numeric_limits<float>::denorm_min(),
+                               -std::numeric_limits<float>::denorm_min(),
+                               std::numeric_limits<float>::min(),
+                               std::numeric_limits<float>::max(),
+                               -std::numeric_limits<float>::max(),
+                               std::nextafter(1.0f, 0.0f),
+                               0.5f,
+                               1e-30f,
+                               -1e-30f};
+  std::mt19937 rng(3);
+  for (int i = 0; i < 100000; ++i) {
+    const float f = bitsToFloat(uint32_t(rng()));
+    if (!std::isnan(f)) values.push_back(f);
+  }
+  for (float f : values) {
+    if (f >= 0.0f) {
+      EXPECT_EQ(floatBits(nextFloatTowardZero(f)), floatBits(std::nextafter(f, 0.0f))) << f;
+    }
+    if (f <= 1.0f) {
+      EXPECT_EQ(floatBits(nextFloatTowardOne(f)), floatBits(std::nextafter(f, 1.0f))) << f;
+    }
+  }
 }
 
 TEST(DepthRule, KeyOrdersByDepthThenId) {

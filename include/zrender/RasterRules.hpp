@@ -135,6 +135,18 @@ inline float bitsToFloat(uint32_t u) {
   return f;
 }
 
+// std::nextafter(f, 0.0f) for f >= 0 or NaN-free zero, and std::nextafter(f, 1.0f) for
+// f <= 1, not NaN: one step on the bits, inline (the transform steps the depth range of every
+// front face; nextafterf is a libm call). Floats of one sign order like their bits.
+inline float nextFloatTowardZero(float f) {
+  return f > 0.0f ? bitsToFloat(floatBits(f) - 1u) : 0.0f;
+}
+inline float nextFloatTowardOne(float f) {
+  if (f == 1.0f) return f;
+  if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
+  return bitsToFloat(f > 0.0f ? floatBits(f) + 1u : floatBits(f) - 1u);
+}
+
 constexpr int32_t kOneBits = 0x3F800000;  // the bits of 1.0f
 
 // Window depth of a planar face as an affine function of the sample position:
