@@ -88,6 +88,20 @@ void shadeRows(const FrameBuffer& fb, int firstRow, int endRow, uint32_t backgro
   }
 }
 
+// shadeRows with one color per face, colorOfFace(id) (0x00RRGGBB), asked once per run of a
+// face's pixels along a row: a face usually covers a few pixels in a row.
+template <typename ColorOfFace>
+void shadeFaceRuns(const FrameBuffer& fb, int firstRow, int endRow, uint32_t background,
+                   cv::Mat& color, ColorOfFace colorOfFace) {
+  uint32_t lastId = kBackgroundId, lastColor = background;
+  shadeRows(fb, firstRow, endRow, background, color, [&](DepthKey key) {
+    const uint32_t id = keyFaceId(key);
+    if (id == lastId) return lastColor;
+    lastId = id;
+    return lastColor = id == kBackgroundId ? background : colorOfFace(id);
+  });
+}
+
 }  // namespace
 
 uint32_t randomFaceColor(uint32_t faceId) {
@@ -410,25 +424,14 @@ void Shader::shadePixelRows(int endRow) {
   }
   if (tableState_ == TableState::MeshFaces) {
     const uint32_t* table = meshColors_.data();
-    const uint32_t meshFaces = uint32_t(meshColors_.size()), background = background_;
-    uint32_t lastId = kBackgroundId, lastColor = background;
-    shadeRows(fb, firstRow, endRow, background, color, [&](DepthKey key) {
-      const uint32_t id = keyFaceId(key);
-      if (id == lastId) return lastColor;  // a face usually covers a few pixels in a row
-      lastId = id;
-      return lastColor = id == kBackgroundId ? background : table[id % meshFaces];
-    });
+    const uint32_t meshFaces = uint32_t(meshColors_.size());
+    shadeFaceRuns(fb, firstRow, endRow, background_, color,
+                  [&](uint32_t id) { return table[id % meshFaces]; });
     return;
   }
   if (perFace_) {
-    const uint32_t background = background_;
-    uint32_t lastId = kBackgroundId, lastColor = background;
-    shadeRows(fb, firstRow, endRow, background, color, [&](DepthKey key) {
-      const uint32_t id = keyFaceId(key);
-      if (id == lastId) return lastColor;  // a face usually covers a few pixels in a row
-      lastId = id;
-      return lastColor = id == kBackgroundId ? background : faceColor(id);
-    });
+    shadeFaceRuns(fb, firstRow, endRow, background_, color,
+                  [&](uint32_t id) { return faceColor(id); });
     return;
   }
 

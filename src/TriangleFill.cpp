@@ -94,6 +94,15 @@ ZRENDER_AVX2 inline void fillBlock(Avx2Triangle& t, DepthKey* cell, __m256i inBo
   t.writtenLanes = _mm256_add_epi64(t.writtenLanes, wins);
 }
 
+// Steps the edge values r0..r2 and the sample centres to the next block of four samples.
+ZRENDER_AVX2 inline void nextBlock(__m256i& r0, __m256i& r1, __m256i& r2, __m256d& xCentre,
+                                   const __m256i blockStep[3], __m256d four) {
+  r0 = _mm256_add_epi64(r0, blockStep[0]);
+  r1 = _mm256_add_epi64(r1, blockStep[1]);
+  r2 = _mm256_add_epi64(r2, blockStep[2]);
+  xCentre = _mm256_add_pd(xCentre, four);
+}
+
 ZRENDER_AVX2 inline uint64_t laneSum(__m256i v) {
   alignas(32) int64_t lanes[4];
   _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), v);
@@ -140,10 +149,7 @@ ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& pla
       __m256d xCentre = firstCentre;
       for (int j = 0; j < blocks; ++j) {
         fillBlock(t, cell + 4 * j, inBounds[j], r0, r1, r2, xCentre, rowBase);
-        r0 = _mm256_add_epi64(r0, blockStep[0]);
-        r1 = _mm256_add_epi64(r1, blockStep[1]);
-        r2 = _mm256_add_epi64(r2, blockStep[2]);
-        xCentre = _mm256_add_pd(xCentre, four);
+        nextBlock(r0, r1, r2, xCentre, blockStep, four);
       }
       for (int i = 0; i < 3; ++i) rowStart[i] = _mm256_add_epi64(rowStart[i], rowStep[i]);
       rowCentre = _mm256_add_pd(rowCentre, one);
@@ -164,10 +170,7 @@ ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& pla
         } else if (reached) {
           break;  // a triangle's samples on a row are contiguous
         }
-        r0 = _mm256_add_epi64(r0, blockStep[0]);
-        r1 = _mm256_add_epi64(r1, blockStep[1]);
-        r2 = _mm256_add_epi64(r2, blockStep[2]);
-        xCentre = _mm256_add_pd(xCentre, four);
+        nextBlock(r0, r1, r2, xCentre, blockStep, four);
       }
       for (int i = 0; i < 3; ++i) rowStart[i] = _mm256_add_epi64(rowStart[i], rowStep[i]);
       rowCentre = _mm256_add_pd(rowCentre, one);
