@@ -110,7 +110,7 @@ Vec4 FaceTransformer::clipOf(size_t vertex) const {
   } else {
     const size_t slots = slotPositions_.size();
     slot = vertex % slots;
-    instance = vertex / slots;
+    instance = view_.firstInstance + vertex / slots;
   }
   const Vec3& p = slotPositions_[slot];
   return mvp_[instance] * Vec4(p[0], p[1], p[2], 1.0);
@@ -122,34 +122,33 @@ void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_
 }
 
 void FaceTransformer::transformAll(FrameGeometry& out) {
+  for (uint32_t k = 0; k < scene_.instanceCount(); ++k) transformInstance(k, out);
+}
+
+void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
   if (!prepared_) prepare();
   const Mesh& mesh = *scene_.mesh;
   const size_t slots = slotPositions_.size();
-  const size_t total = slots * scene_.instanceCount();
-  state_.resize(total);
-  vertexWindow_.resize(total);
-  view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr};
-  for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
-    size_t v = 0;
-    if (avx2_) {
-      for (; v + 4 <= slots; v += 4) {
-        const Vec3* p = slotPositions_.data() + v;
-        const Vec3* const positions[4] = {p, p + 1, p + 2, p + 3};
-        projectVertices4Avx2(mvp_[k], positions, viewport_, frame_, &state_[k * slots + v],
-                             &vertexWindow_[k * slots + v]);
-      }
+  instanceState_.resize(slots);
+  instanceWindow_.resize(slots);
+  view_ = VertexView{instanceState_.data(), instanceWindow_.data(), nullptr, nullptr, instance};
+  const Mat4& mvp = mvp_[instance];
+  size_t v = 0;
+  if (avx2_) {
+    for (; v + 4 <= slots; v += 4) {
+      const Vec3* p = slotPositions_.data() + v;
+      const Vec3* const positions[4] = {p, p + 1, p + 2, p + 3};
+      projectVertices4Avx2(mvp, positions, viewport_, frame_, &instanceState_[v],
+                           &instanceWindow_[v]);
     }
-    for (; v < slots; ++v) computeVertex(mvp_[k], slotPositions_[v], k * slots + v);
   }
+  for (; v < slots; ++v) computeVertex(mvp, slotPositions_[v], v);
   out.width = width_ * scale_;
   out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
-  for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
-    const uint32_t base = uint32_t(k * slots);
-    for (uint32_t f = 0; f < nf; ++f) {
-      const uint32_t n = mesh.cornerCount(f);
-      appendFace(k * nf + f, FaceCorners{cornerSlots_.data() + mesh.faceStart[f], base}, n, out);
-    }
+  for (uint32_t f = 0; f < nf; ++f) {
+    const uint32_t n = mesh.cornerCount(f);
+    appendFace(instance * nf + f, FaceCorners{cornerSlots_.data() + mesh.faceStart[f], 0}, n, out);
   }
 }
 
@@ -161,7 +160,7 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
     state_.assign(slots * scene_.instanceCount(), VertexState());
     vertexWindow_.resize(slots * scene_.instanceCount());
   }
-  view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr};
+  view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr, 0};
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
   out.width = width_ * scale_;
@@ -184,7 +183,7 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
     batchWindow_.resize(count);
   }
   view_ = VertexView{batchState_.data(), batchWindow_.data(), batchVertexSlot_.data() + v0,
-                     batchVertexInstance_.data() + v0};
+                     batchVertexInstance_.data() + v0, 0};
   const uint32_t* slot = view_.slot;
   const uint32_t* instance = view_.instance;
   uint32_t i = 0;
@@ -217,17 +216,23 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
   }
 }
 
+float nearestCornerDepth(const Vec3* window, uint32_t count) {
+  double lo = window[0][2];
+  for (uint32_t i = 1; i < count; ++i) lo = std::min(lo, window[i][2]);
+  float flo = static_cast<float>(std::max(lo, 0.0));
+  if (double(flo) > lo) flo = nextFloatTowardZero(flo);
+  return std::max(flo, 0.0f);
+}
+
 namespace {
 
 // Sets the plane's clamp range to the corners' depths, widened to the enclosing floats.
 void setDepthRange(DepthPlane& plane, const Vec3* window, uint32_t count) {
-  double lo = window[0][2], hi = window[0][2];
-  for (uint32_t i = 1; i < count; ++i)
-    lo = std::min(lo, window[i][2]), hi = std::max(hi, window[i][2]);
-  float flo = static_cast<float>(std::max(lo, 0.0)), fhi = static_cast<float>(std::min(hi, 1.0));
-  if (double(flo) > lo) flo = nextFloatTowardZero(flo);
+  double hi = window[0][2];
+  for (uint32_t i = 1; i < count; ++i) hi = std::max(hi, window[i][2]);
+  float fhi = static_cast<float>(std::min(hi, 1.0));
   if (double(fhi) < hi) fhi = nextFloatTowardOne(fhi);
-  plane.loBits = int32_t(floatBits(std::max(flo, 0.0f)));
+  plane.loBits = int32_t(floatBits(nearestCornerDepth(window, count)));
   plane.hiBits = int32_t(floatBits(std::min(fhi, 1.0f)));
 }
 
@@ -372,13 +377,14 @@ void FaceTransformer::appendTriangle(uint32_t faceId, FaceCorners corners, Frame
   }
   const Vec3 window[3] = {view_.window[corners[0]], view_.window[corners[1]],
                           view_.window[corners[2]]};
+  const FixedPoint points[3] = {a, b, c};
+  if (filter_ && filter_->hidden(points, nearestCornerDepth(window, 3), faceId)) return;
   bool ok = false;
   const DepthPlane plane = planeOf(window, 3, ok);
   if (!ok) {
     counters.degenerate += 1;
     return;
   }
-  const FixedPoint points[3] = {a, b, c};
   const std::array<uint32_t, 3> piece = orientedPiece(frontFacing);
   pushFace(faceId, plane, frontFacing, points, 3, &piece, 1, out);
 }

@@ -1,6 +1,7 @@
 #include "zrender/HierarchicalAlgorithm.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "zrender/TriangleFill.hpp"
@@ -40,21 +41,81 @@ void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
   if (stats.pixelsWritten != written) pyramid_.update(s.minX, s.minY, s.maxX, s.maxY);
 }
 
+namespace {
+
+double nowMilliseconds() {
+  using namespace std::chrono;
+  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
+}
+
+// The transform's filter: a triangle face is dropped when the pyramid proves it hidden.
+class PyramidFilter : public TriangleFilter {
+ public:
+  PyramidFilter(const HzbRasterizer& rasterizer, RenderStats& stats)
+      : rasterizer_(rasterizer), stats_(stats) {}
+  bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
+    return rasterizer_.rejects(v, nearestDepth, faceId, stats_);
+  }
+
+ private:
+  const HzbRasterizer& rasterizer_;
+  RenderStats& stats_;
+};
+
+}  // namespace
+
+void HierarchicalAlgorithm::prepare(const Scene& scene) {
+  const std::vector<Vec3>& positions = scene.mesh->positions;
+  if (positions.empty()) return;
+  Vec3 lo = positions[0], hi = positions[0];
+  for (const Vec3& p : positions)
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  meshCentre_ = (lo + hi) * 0.5;
+}
+
 void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
-  // Band order (face id order within a band) keeps the crowd's front-to-back order and the
-  // z-buffer's cache locality.
-  const std::vector<ScreenTriangle>& triangles =
-      bands_.sort(input.geometry, fb.width(), fb.height());
+  const Scene& scene = input.scene;
+  FrameGeometry& g = input.geometry;
+  // Nearest instance first (by the centre of its box), which fills the pyramid with what hides
+  // the others; the order never changes the result.
+  const Vec3 eye = input.camera.eye;
+  instances_.resize(scene.instanceCount());
+  std::vector<double> distance(instances_.size());
+  for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
+    const Mat4 model = scene.modelMatrix(k);
+    const Vec4 c = model * Vec4(meshCentre_[0], meshCentre_[1], meshCentre_[2], 1.0);
+    const Vec3 d(c[0] - eye[0], c[1] - eye[1], c[2] - eye[2]);
+    distance[k] = d.dot(d);
+    instances_[k] = k;
+  }
+  std::stable_sort(instances_.begin(), instances_.end(),
+                   [&](uint32_t a, uint32_t b) { return distance[a] < distance[b]; });
+
   rasterizer_.begin(fb);
-  for (int band = 0; band < bands_.bandCount(); ++band) {
-    // No later triangle starts above this band: the rows above it are final.
-    const int bandTop = band << TriangleBands::kBandShift;
-    if (bandTop > 0) {
-      rasterizer_.finishRows(bandTop);
-      input.rowsFinal(bandTop);
+  PyramidFilter filter(rasterizer_, stats);
+  for (size_t i = 0; i < instances_.size(); ++i) {
+    const double t0 = nowMilliseconds();
+    const size_t firstTriangle = g.triangles.size();
+    // The first instance finds the pyramid empty: nothing to ask it.
+    input.transformer.setFilter(i > 0 ? &filter : nullptr);
+    input.transformer.transformInstance(instances_[i], g);
+    input.transformer.setFilter(nullptr);
+    stats.lazyTransformMs += nowMilliseconds() - t0;
+
+    // Band order keeps the z-buffer's cache locality; in the last instance, the rows above a
+    // band are final once it starts (no later triangle starts above it).
+    const bool last = i + 1 == instances_.size();
+    const std::vector<ScreenTriangle>& triangles =
+        bands_.sort(g, firstTriangle, fb.width(), fb.height());
+    for (int band = 0; band < bands_.bandCount(); ++band) {
+      const int bandTop = band << TriangleBands::kBandShift;
+      if (last && bandTop > 0) {
+        rasterizer_.finishRows(bandTop);
+        input.rowsFinal(bandTop);
+      }
+      for (uint32_t t = bands_.bandStart(band); t < bands_.bandStart(band + 1); ++t)
+        rasterizer_.drawTriangle(triangles[t], stats);
     }
-    for (uint32_t i = bands_.bandStart(band); i < bands_.bandStart(band + 1); ++i)
-      rasterizer_.drawTriangle(triangles[i], stats);
   }
   rasterizer_.finish();
 }

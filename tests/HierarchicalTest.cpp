@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,7 @@
 #include "zrender/HierarchicalAlgorithm.hpp"
 #include "zrender/Octree.hpp"
 #include "zrender/OctreeAlgorithm.hpp"
+#include "zrender/Renderer.hpp"
 #include "zrender/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -286,12 +289,10 @@ void expectSameGeometry(const FrameGeometry& a, const FrameGeometry& b, const st
   EXPECT_EQ(a.counters.degenerate, b.counters.degenerate) << what;
 }
 
-TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
-  // Quads and a concave polygon, on a floor that crosses the near plane and leaves the image,
-  // in a grid of 3 x 1 x 2 instances; faces in a shuffled order cut into batches of random
-  // sizes, two frames from different eyes. Each batch computes its own vertices, so a vertex
-  // shared by batches is computed several times: every face must still come out as when it is
-  // transformed on its own with the whole model's vertices.
+// The scene of the transform tests: quads, mixed triangles and a concave polygon on a floor
+// that crosses the near plane and leaves the image, plus a face that snaps to fewer than three
+// corners, in a grid of 3 x 1 x 2 instances.
+Scene floorGridScene(SceneSettings& s) {
   std::vector<Vec3> p;
   std::vector<std::vector<int>> f;
   addTiltedFloor(12, true, p, f);
@@ -306,10 +307,21 @@ TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
   f.push_back({b, b + 1, b + 2, b + 3, b + 4, b + 5, b + 6});
   f.push_back({b + 6, b + 5, b + 4, b + 3, b + 2, b + 1, b});
   f.push_back({b, b, b + 1});  // snaps to fewer than three corners
-  SceneSettings s = test::tinySettings(90);
+  s = test::tinySettings(90);
   s.grid = Grid{{3, 1, 2}, {4.0, 0.0, 5.0}};
   Warnings warnings;
-  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  return makeScene(s, test::makeMesh(p, f), warnings);
+}
+
+TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
+  // Quads and a concave polygon, on a floor that crosses the near plane and leaves the image,
+  // in a grid of 3 x 1 x 2 instances; faces in a shuffled order cut into batches of random
+  // sizes, two frames from different eyes. Each batch computes its own vertices, so a vertex
+  // shared by batches is computed several times: every face must still come out as when it is
+  // transformed on its own with the whole model's vertices.
+  SceneSettings s;
+  const Scene scene = floorGridScene(s);
+  Warnings warnings;
 
   std::mt19937 rng(7);
   std::vector<uint32_t> order(scene.faceCount());
@@ -340,6 +352,107 @@ TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
       expectSameGeometry(expected, actual, cull ? "culling" : "no culling");
     }
   }
+}
+
+TEST(FaceTransformerTest, InstancesGiveWhatFaceByFaceGives) {
+  // Instances in a shuffled order, each with its vertices in arrays reused from one to the
+  // next: a face of instance k (clipped ones included, which recompute clip coordinates from
+  // the instance) must come out as when transformed on its own.
+  SceneSettings s;
+  const Scene scene = floorGridScene(s);
+  const uint32_t nf = uint32_t(scene.mesh->faceCount());
+  const std::vector<uint32_t> instances = {3, 0, 5, 1, 4, 2};
+  Warnings warnings;
+  for (bool cull : {true, false}) {
+    FaceTransformer byFace(scene, 1, cull), byInstance(scene, 1, cull);
+    for (const Vec3& eye : {Vec3(0.3, 0.2, 1.0), Vec3(-0.5, -0.3, 2.5)}) {
+      SceneSettings view = s;
+      view.eye = eye;
+      const Camera camera = makeCamera(makeScene(view, scene.mesh, warnings));
+      byFace.beginFrame(camera);
+      byInstance.beginFrame(camera);
+      FrameGeometry expected, actual;
+      for (uint32_t k : instances) {
+        for (uint32_t f = 0; f < nf; ++f) byFace.transformFace(k * nf + f, expected);
+        byInstance.transformInstance(k, actual);
+      }
+      // Not vacuous: many faces went through the whole path, some were clipped or dropped.
+      EXPECT_GT(expected.triangles.size() + expected.counters.backfaceCulled, 300u);
+      EXPECT_GT(expected.triangles.size(), 0u);
+      EXPECT_GT(expected.counters.clippedAway, 0u);
+      expectSameGeometry(expected, actual, cull ? "culling" : "no culling");
+    }
+  }
+}
+
+// Drops every third face it is asked about and remembers what it was told.
+class RecordingFilter : public TriangleFilter {
+ public:
+  struct Asked {
+    FixedPoint v[3];
+    float nearestDepth;
+  };
+  std::map<uint32_t, Asked> asked;
+  bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
+    asked[faceId] = Asked{{v[0], v[1], v[2]}, nearestDepth};
+    return faceId % 3 == 0;
+  }
+};
+
+TEST(FaceTransformerTest, FilterSeesTheFaceAsDrawnAndDropsOnlyWhatItRejects) {
+  SceneSettings s;
+  const Scene scene = floorGridScene(s);
+  const Camera camera = makeCamera(scene);
+  FaceTransformer plain(scene, camera, 1, true), filtered(scene, camera, 1, true);
+  RecordingFilter filter;
+  filtered.setFilter(&filter);
+  FrameGeometry expected, actual;
+  for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
+    plain.transformInstance(k, expected);
+    filtered.transformInstance(k, actual);
+  }
+  std::map<uint32_t, size_t> actualFace;
+  for (size_t i = 0; i < actual.faces.size(); ++i) actualFace[actual.faces[i].id] = i;
+  size_t dropped = 0, keptAsked = 0, notAsked = 0;
+  for (const ScreenFace& face : expected.faces) {
+    const auto asked = filter.asked.find(face.id);
+    const auto kept = actualFace.find(face.id);
+    if (asked != filter.asked.end() && face.id % 3 == 0) {
+      EXPECT_TRUE(kept == actualFace.end()) << "face " << face.id << " was rejected";
+      ++dropped;
+      continue;
+    }
+    ASSERT_TRUE(kept != actualFace.end()) << "face " << face.id;
+    const ScreenFace& other = actual.faces[kept->second];
+    ASSERT_EQ(face.triangleCount, other.triangleCount);
+    for (uint32_t t = 0; t < face.triangleCount; ++t) {
+      const ScreenTriangle& x = expected.triangles[face.firstTriangle + t];
+      const ScreenTriangle& y = actual.triangles[other.firstTriangle + t];
+      EXPECT_TRUE(x.v[0] == y.v[0] && x.v[1] == y.v[1] && x.v[2] == y.v[2] && x.id == y.id &&
+                  x.plane.loBits == y.plane.loBits && x.plane.c == y.plane.c)
+          << face.id;
+    }
+    if (asked == filter.asked.end()) {
+      ++notAsked;  // polygons and clipped faces take the general path
+      continue;
+    }
+    ++keptAsked;
+    // What the filter was told is what the pixel loops get: the corners, and the nearest
+    // corner depth as the plane's clamp holds it, bit for bit.
+    const ScreenTriangle& t = expected.triangles[face.firstTriangle];
+    EXPECT_EQ(floatBits(asked->second.nearestDepth), uint32_t(t.plane.loBits)) << face.id;
+    std::set<std::pair<int32_t, int32_t>> told, drawn;
+    for (int i = 0; i < 3; ++i) {
+      told.insert({asked->second.v[i].x, asked->second.v[i].y});
+      drawn.insert({t.v[i].x, t.v[i].y});
+    }
+    EXPECT_EQ(told, drawn) << face.id;
+  }
+  EXPECT_GT(dropped, 50u);
+  EXPECT_GT(keptAsked, 100u);
+  EXPECT_GT(notAsked, 10u);
+  EXPECT_EQ(actual.faces.size(), expected.faces.size() - dropped);
+  EXPECT_EQ(expected.counters.backfaceCulled, actual.counters.backfaceCulled);
 }
 
 TEST(OctreeTest, EveryFaceOnceAndInsideItsNodes) {
@@ -631,6 +744,40 @@ TEST(HierarchicalExactTest, CoplanarTiesWithSmallerIdBehind) {
   EXPECT_GT(c.covered, 500u);
   const test::Rendered r = test::render(test::makeMesh(p, f), s, "hierarchical");
   EXPECT_EQ(keyFaceId(r.buffer.row(32)[32]), 0u);
+}
+
+TEST(HierarchicalExactTest, NearestInstanceFirstHidesTheOthersBeforeTheirSetUp) {
+  // A tessellated square (200 triangles) in a row of four instances along z, numbered far to
+  // near as the eye sees them: the nearest is drawn first, and every triangle of the three
+  // behind it is proved hidden (most already in the transform, without set-up).
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  const int n = 10;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      f.push_back({a, a + 1, a + n + 2});
+      f.push_back({a, a + n + 2, a + n + 1});
+    }
+  SceneSettings s = test::tinySettings(128);
+  s.grid = Grid{{1, 1, 4}, {0.0, 0.0, 0.5}};  // z = -0.75, -0.25, 0.25, 0.75
+  // The last instance is the nearest and covers two thirds of the image, all of the tiles the
+  // others reach.
+  s.eye = Vec3(0.0, 0.0, 1.5);
+  s.target = Vec3(0.0, 0.0, 0.0);
+  Warnings warnings;
+  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const Compared c = expectSameAsZBuffer(scene, "row of squares");
+  const RenderStats& h = c.stats[0];
+  EXPECT_GT(c.covered, 4000u);
+  EXPECT_EQ(h.trianglesRasterized, 200u);
+  EXPECT_EQ(h.trianglesHzbCulled, 600u);
+  // Those of the instances behind never reached the frame's geometry.
+  Renderer renderer(scene, "hierarchical");
+  renderer.renderFrame(makeCamera(scene));
+  EXPECT_EQ(renderer.geometry().triangles.size(), 200u);
 }
 
 TEST(HierarchicalExactTest, CrowdSmall) {

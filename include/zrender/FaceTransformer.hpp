@@ -12,6 +12,21 @@ namespace zrender {
 
 // Vertices to window coordinates, near/far clipping, snapping, back-face culling and window
 // space triangulation: the transform stage of SPEC §4–5, shared by every algorithm.
+// A test the transform asks about a triangle face before setting up its depth plane and
+// storing it, for algorithms that can prove it hidden from its corners alone (the z-pyramid):
+// such faces then cost no more than a back face.
+class TriangleFilter {
+ public:
+  virtual ~TriangleFilter() = default;
+  // `v`: the snapped corners (samples, either winding); `nearestDepth`: the least window depth
+  // of the corners, as the face's DepthPlane::minDepth() will be. True drops the face.
+  virtual bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) = 0;
+};
+
+// The least corner depth of a face as DepthPlane::minDepth() holds it: the greatest float not
+// above the least of `window[i][2]`, clamped to [0, 1].
+float nearestCornerDepth(const Vec3* window, uint32_t count);
+
 class FaceTransformer {
  public:
   // sampleScale: 1, or 2 for MSAA 4 (the four samples of a pixel are a 2 x 2 grid of samples).
@@ -35,8 +50,13 @@ class FaceTransformer {
   // initialising it again per frame cost more than the lazy transform saves.
   void beginFrame(const Camera& camera);
 
-  // Every face of every instance, in face id order.
+  // Every face of every instance, in face id order (transformInstance() for each).
   void transformAll(FrameGeometry& out);
+
+  // Every face of one instance, in face id order. The instance's vertices are computed first,
+  // into arrays reused from instance to instance: they stay in cache while its faces read them
+  // (for a grid, the whole model's would not).
+  void transformInstance(uint32_t instance, FrameGeometry& out);
 
   // One face (global id); its vertices are transformed on first use in this frame, into
   // per-vertex state for the whole model. For callers that pick faces one at a time; the octree
@@ -50,18 +70,23 @@ class FaceTransformer {
   // For algorithms that draw a model in spatially compact groups (the octree's leaves).
   void transformBatch(uint32_t batch, FrameGeometry& out);
 
+  // Asked about every triangle face inside near/far and the guard band (most faces) from now
+  // on; null for none. The filter must outlive its use.
+  void setFilter(TriangleFilter* filter) { filter_ = filter; }
+
   const Mat4& modelViewProjection(uint32_t instance) const { return mvp_[instance]; }
   int sampleScale() const { return scale_; }
 
  private:
-  // The vertices faces read: the whole model's (numbered instance-major: index = instance *
-  // slots + slot; `slot` and `instance` null) or one batch's (local numbers, with their slot and
-  // instance).
+  // The vertices faces read: the whole model's or one instance's (numbered instance-major from
+  // `firstInstance`: index = (instance - firstInstance) * slots + slot; `slot` and `instance`
+  // null) or one batch's (local numbers, with their slot and instance).
   struct VertexView {
     VertexState* state;
     Vec3* window;
     const uint32_t* slot;
     const uint32_t* instance;
+    uint32_t firstInstance;
   };
 
   void prepareBatches(const std::vector<uint32_t>& faceOrder, const std::vector<uint32_t>& batches);
@@ -90,14 +115,17 @@ class FaceTransformer {
   VertexViewport viewport_;
   bool avx2_;  // vertices four at a time (projectVertices4Avx2)
   bool cull_;
+  TriangleFilter* filter_ = nullptr;
   std::vector<Mat4> mvp_;  // per instance, model to clip space
   bool prepared_ = false;
   std::vector<Vec3> slotPositions_;    // model space: the positions faces use, by first use
   std::vector<uint32_t> cornerSlots_;  // per mesh corner: its position's slot
   std::vector<VertexState> state_;     // per vertex
   std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth (read by faces that survive)
+  std::vector<VertexState> instanceState_;  // transformInstance(): per slot, for one instance
+  std::vector<Vec3> instanceWindow_;
   uint32_t frame_ = 0;
-  VertexView view_{nullptr, nullptr, nullptr, nullptr};
+  VertexView view_{nullptr, nullptr, nullptr, nullptr, 0};
   // Batches (prepareBatches): per batch b, faces batchFaces_[batchFaceStart_[b], ...[b + 1]),
   // their vertices (slot and instance) from batchVertexStart_[b], and their corners' local
   // vertex numbers, face after face, from batchCornerStart_[b].

@@ -53,6 +53,16 @@ inline DepthKey nearestKeyOver(const DepthPlane& plane, uint32_t faceId, int min
 // are filled exactly as by the z-buffer and the pyramid is brought up to date.
 class HzbRasterizer {
  public:
+  // Whether a triangle is proved hidden from its snapped corners `v` and the least depth of
+  // its corners alone (the first test of drawTriangle); counts it in `stats` if so.
+  bool rejects(const FixedPoint* v, float nearestDepth, uint32_t faceId, RenderStats& stats) const {
+    TriangleSetup s;
+    if (!s.bounds(v, fb_->width(), fb_->height())) return true;  // no sample centre in the image
+    if (!pyramid_.occludes(s.minX, s.minY, s.maxX, s.maxY, makeDepthKey(nearestDepth, faceId)))
+      return false;
+    ++stats.trianglesHzbCulled;
+    return true;
+  }
   // Starts a frame: the buffer is logically cleared (and physically cleared row by row as
   // triangles reach it).
   void begin(FrameBuffer& fb) {
@@ -89,18 +99,25 @@ class HzbRasterizer {
 };
 
 // Greene, Kass and Miller's hierarchical z-buffer without the object-space octree: every face
-// is transformed (transformsAll), and each triangle is tested against the z-pyramid before
-// rasterization. Triangles are visited in bands of sample rows, top to bottom, in face id
-// order within a band (TriangleBands): a scene whose faces come front to back in the file keeps
-// most of its culling.
+// is transformed, and each triangle is tested against the z-pyramid before rasterization.
+// Instances (of a grid) are taken one at a time, nearest first: each is transformed
+// (transformInstance) with the pyramid as its previous ones left it as a filter, so that a
+// triangle face already proved hidden there costs no depth plane, no storage and no sorting;
+// then its triangles are drawn in bands of sample rows, top to bottom, in face id order within
+// a band (TriangleBands), each tested against the pyramid again. A model whose faces come front
+// to back in the file keeps most of its culling within one instance.
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }
+  void prepare(const Scene& scene) override;
+  bool transformsAll() const override { return false; }
   void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
 
  private:
   HzbRasterizer rasterizer_;
   TriangleBands bands_;
+  Vec3 meshCentre_{0, 0, 0};         // model space: the centre of the mesh's bounding box
+  std::vector<uint32_t> instances_;  // this frame's instance order, nearest first
 };
 
 }  // namespace zrender

@@ -37,6 +37,8 @@ class Renderer {
   const FrameBuffer& buffer() const { return buffer_; }
   const cv::Mat& color() const { return color_; }
   const RenderStats& stats() const { return stats_; }
+  // The faces the last frame transformed and kept (algorithms that cull early keep fewer).
+  const FrameGeometry& geometry() const { return geometry_; }
   const VisibilityAlgorithm& algorithm() const { return *algorithm_; }
 
  private:

@@ -16,7 +16,12 @@ class TriangleBands {
 
   // The triangles of `g` that reach the width x height sample image, sorted by the band of
   // their first row (a counting sort: linear, stable). Valid until the next call.
-  const std::vector<ScreenTriangle>& sort(const FrameGeometry& g, int width, int height);
+  const std::vector<ScreenTriangle>& sort(const FrameGeometry& g, int width, int height) {
+    return sort(g, 0, width, height);
+  }
+  // The same for the triangles of `g` from index `first` on.
+  const std::vector<ScreenTriangle>& sort(const FrameGeometry& g, size_t first, int width,
+                                          int height);
 
   // After sort(): the bands, and the triangles of band b (first rows b * 32 to b * 32 + 31)
   // at indices [bandStart(b), bandStart(b + 1)) of the sorted triangles.
