@@ -67,6 +67,23 @@ FixedPoint randomPoint(std::mt19937& rng) {
   return {d(rng), d(rng)};
 }
 
+TEST(FillRule, SampleRangeOfAnIntervalIsTheCentresInIt) {
+  // The first and last sample whose centre (i + 1/2 pixels, in fixed point) lies in [lo, hi],
+  // checked by definition around zero, around sample centres and at the guard band's ends.
+  std::vector<int64_t> values;
+  for (int64_t v = -3 * kSubpixel; v <= 3 * kSubpixel; ++v) values.push_back(v);
+  for (int64_t big : {int64_t(kGuardBand) * kSubpixel, int64_t(1) << 30})
+    for (int64_t d = -2; d <= 2; ++d) values.push_back(big + d), values.push_back(-big + d);
+  for (int64_t v : values) {
+    const int first = firstSampleAtOrAfter(v), last = lastSampleAtOrBefore(v);
+    const auto centre = [](int64_t i) { return i * kSubpixel + kHalfSubpixel; };
+    ASSERT_GE(centre(first), v) << v;
+    ASSERT_LT(centre(first - 1), v) << v;
+    ASSERT_LE(centre(last), v) << v;
+    ASSERT_GT(centre(last + 1), v) << v;
+  }
+}
+
 TEST(FillRule, TwoTrianglesSharingAnEdgeCoverTheirUnionExactlyOnce) {
   std::mt19937 rng(1234);
   int checked = 0;

@@ -57,11 +57,13 @@ inline int64_t ceilDiv(int64_t a, int64_t b) {
 }
 
 // First and last sample index whose centre lies in [lo, hi] (fixed point); first > last if none.
+// kSubpixel is a power of two, so these are arithmetic shifts (a floor for negative values too):
+// ceilDiv and floorDiv without their sign branches, for every triangle.
 inline int firstSampleAtOrAfter(int64_t lo) {
-  return int(ceilDiv(lo - kHalfSubpixel, kSubpixel));
+  return int((lo - kHalfSubpixel + (kSubpixel - 1)) >> kSubpixelBits);
 }
 inline int lastSampleAtOrBefore(int64_t hi) {
-  return int(floorDiv(hi - kHalfSubpixel, kSubpixel));
+  return int((hi - kHalfSubpixel) >> kSubpixelBits);
 }
 
 // Twice the signed area of (a, b, c) in fixed point; > 0 when c lies to the right of a->b as
