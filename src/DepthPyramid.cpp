@@ -1,11 +1,88 @@
 #include "zrender/DepthPyramid.hpp"
 
+#include <immintrin.h>
+
 #include <algorithm>
+#include <climits>
+
+#include "zrender/CpuFeatures.hpp"
 
 namespace zrender {
 
+TileMax tileMax(const DepthKey* first, size_t stride, int rows, int columns) {
+  // The maximum of each row (branch-free), the last row holding the overall maximum, then the
+  // last sample of that row holding it.
+  TileMax m;
+  for (int y = 0; y < rows; ++y) {
+    const DepthKey* row = first + size_t(y) * stride;
+    DepthKey rowMax = row[0];
+    for (int i = 1; i < columns; ++i) rowMax = std::max(rowMax, row[i]);
+    m.row = rowMax >= m.key ? y : m.row;
+    m.key = std::max(m.key, rowMax);
+  }
+  const DepthKey* row = first + size_t(m.row) * stride;
+  m.column = columns - 1;
+  while (m.column > 0 && row[m.column] != m.key) --m.column;
+  return m;
+}
+
+namespace {
+
+#define ZRENDER_AVX2 __attribute__((target("avx2")))
+
+// Keys with the top bit flipped: unsigned 64-bit order becomes the signed order AVX2 compares.
+ZRENDER_AVX2 inline __m256i loadFlipped(const DepthKey* p) {
+  return _mm256_xor_si256(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)),
+                          _mm256_set1_epi64x(INT64_MIN));
+}
+ZRENDER_AVX2 inline __m256i maxFlipped(__m256i a, __m256i b) {
+  return _mm256_blendv_epi8(a, b, _mm256_cmpgt_epi64(b, a));
+}
+// Bit i set when key i of the four equals the flipped `wanted`.
+ZRENDER_AVX2 inline unsigned equalMask(const DepthKey* p, __m256i wanted) {
+  return unsigned(
+      _mm256_movemask_pd(_mm256_castsi256_pd(_mm256_cmpeq_epi64(loadFlipped(p), wanted))));
+}
+
+}  // namespace
+
+ZRENDER_AVX2 TileMax tileMaxAvx2(const DepthKey* first, size_t stride, int rows) {
+  static_assert(DepthPyramid::kTileSize == 16, "four vectors of four keys per row");
+  const auto load = loadFlipped;
+  const auto max = maxFlipped;
+  // The maximum over the tile, four independent column vectors at a time.
+  __m256i m0 = load(first), m1 = load(first + 4), m2 = load(first + 8), m3 = load(first + 12);
+  for (int y = 1; y < rows; ++y) {
+    const DepthKey* row = first + size_t(y) * stride;
+    m0 = max(m0, load(row));
+    m1 = max(m1, load(row + 4));
+    m2 = max(m2, load(row + 8));
+    m3 = max(m3, load(row + 12));
+  }
+  const __m256i m = max(max(m0, m1), max(m2, m3));
+  alignas(32) int64_t lanes[4];
+  _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), m);
+  const int64_t best = std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3]));
+  // The last row holding it, from the bottom, and its last sample holding it.
+  const __m256i wanted = _mm256_set1_epi64x(best);
+  TileMax out;
+  out.key = DepthKey(best) ^ DepthKey(INT64_MIN);
+  for (int y = rows - 1; y >= 0; --y) {
+    const DepthKey* row = first + size_t(y) * stride;
+    const unsigned mask = equalMask(row, wanted) | equalMask(row + 4, wanted) << 4 |
+                          equalMask(row + 8, wanted) << 8 | equalMask(row + 12, wanted) << 12;
+    if (mask) {
+      out.row = y;
+      out.column = 31 - __builtin_clz(mask);
+      return out;
+    }
+  }
+  return out;  // not reached: the maximum is in some row
+}
+
 void DepthPyramid::begin(FrameBuffer& fb) {
   fb_ = &fb;
+  avx2_ = cpuHasAvx2();
   if (fb.width() != width_ || fb.height() != height_ || levels_.empty()) {
     width_ = fb.width();
     height_ = fb.height();
@@ -62,27 +139,11 @@ void DepthPyramid::rescanTile(int tx, int ty) {
       }
     }
   }
-  // The maximum of each row (branch-free; a constant trip count for whole tiles), the last row
-  // holding the overall maximum, then the last sample of that row holding it: for a tile with
-  // samples still clear, the bottom-right-most of them, which triangles drawn top to bottom
-  // reach last.
-  DepthKey best = 0;
-  int bestRow = y0;
-  for (int y = y0; y < y1; ++y) {
-    const DepthKey* row = fb_->row(y) + x0;
-    DepthKey m = row[0];
-    if (x1 - x0 == kTileSize) {
-      for (int i = 1; i < kTileSize; ++i) m = std::max(m, row[i]);  // a constant trip count
-    } else {
-      for (int i = 1; i < x1 - x0; ++i) m = std::max(m, row[i]);
-    }
-    bestRow = m >= best ? y : bestRow;
-    best = std::max(best, m);
-  }
-  const DepthKey* row = fb_->row(bestRow);
-  int bestX = x1 - 1;
-  while (bestX > x0 && row[bestX] != best) --bestX;
-  tileArgMax_[t] = uint32_t(size_t(bestRow) * size_t(width_) + size_t(bestX));
+  const TileMax m = avx2_ && x1 - x0 == kTileSize
+                        ? tileMaxAvx2(fb_->row(y0) + x0, size_t(width_), y1 - y0)
+                        : tileMax(fb_->row(y0) + x0, size_t(width_), y1 - y0, x1 - x0);
+  const DepthKey best = m.key;
+  tileArgMax_[t] = uint32_t(size_t(y0 + m.row) * size_t(width_) + size_t(x0 + m.column));
   if (best == levels_[0][t]) return;
   levels_[0][t] = best;
   propagate(tx, ty);

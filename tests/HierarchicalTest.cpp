@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "TestSupport.hpp"
+#include "zrender/CpuFeatures.hpp"
 #include "zrender/DepthPyramid.hpp"
 #include "zrender/FaceTransformer.hpp"
 #include "zrender/HierarchicalAlgorithm.hpp"
@@ -190,6 +191,47 @@ TEST(HzbRasterizerTest, BigTriangleWhoseNearCornerIsOffScreenIsRejectedByItsPlan
   EXPECT_EQ(stats.trianglesHzbCulled, 1u);
   r.finish();
   EXPECT_EQ(keyFaceId(fb.row(10)[20]), 3u);
+}
+
+TEST(DepthPyramidTest, VectorTileMaximumMatchesTheScalarOne) {
+  // Random tiles of few distinct keys (many ties, so the row and column picked matter), some
+  // with the top bit set (unsigned order), with 1 to 16 rows, inside a wider buffer.
+  if (!cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU";
+  std::mt19937_64 rng(11);
+  const size_t stride = 40;
+  std::vector<DepthKey> buffer(stride * 16);
+  int lastRowPicked = 0, notLastColumn = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int distinct = 1 + int(rng() % 6);
+    std::vector<DepthKey> pool(static_cast<size_t>(distinct));
+    for (DepthKey& k : pool) {
+      k = rng();
+      if (rng() % 2) k &= ~(DepthKey(1) << 63);
+      if (rng() % 4 == 0) k = kClearKey;
+    }
+    for (DepthKey& k : buffer) k = pool[rng() % pool.size()];
+    const int rows = 1 + int(rng() % 16);
+    const DepthKey* first = buffer.data() + 3;
+    const TileMax expected = tileMax(first, stride, rows, DepthPyramid::kTileSize);
+    const TileMax actual = tileMaxAvx2(first, stride, rows);
+    ASSERT_EQ(expected.key, actual.key) << trial;
+    ASSERT_EQ(expected.row, actual.row) << trial;
+    ASSERT_EQ(expected.column, actual.column) << trial;
+    // The scalar one, by definition: the largest key, at the last row and column holding it.
+    DepthKey largest = 0;
+    for (int y = 0; y < rows; ++y)
+      for (int x = 0; x < 16; ++x) largest = std::max(largest, first[size_t(y) * stride + x]);
+    ASSERT_EQ(expected.key, largest);
+    ASSERT_EQ(first[size_t(expected.row) * stride + size_t(expected.column)], largest);
+    for (int y = expected.row + 1; y < rows; ++y)
+      for (int x = 0; x < 16; ++x) ASSERT_NE(first[size_t(y) * stride + x], largest);
+    for (int x = expected.column + 1; x < 16; ++x)
+      ASSERT_NE(first[size_t(expected.row) * stride + x], largest);
+    lastRowPicked += expected.row == rows - 1;
+    notLastColumn += expected.column != 15;
+  }
+  EXPECT_GT(lastRowPicked, 1000);
+  EXPECT_GT(notLastColumn, 1000);
 }
 
 TEST(DepthPyramidTest, NodesBoundTheBufferAfterRandomWrites) {
