@@ -58,6 +58,18 @@ void FaceTransformer::prepare(const std::vector<uint32_t>* faceOrder,
     for (uint32_t id : *faceOrder) visitFace(id % nf);
   for (uint32_t f = 0; f < nf; ++f) visitFace(f);  // the rest, in file order
   prepared_ = true;
+
+  // The box of the positions faces use, and what a wholly invisible instance counts.
+  boundsLo_ = boundsHi_ = slotPositions_.empty() ? Vec3(0, 0, 0) : slotPositions_[0];
+  for (const Vec3& p : slotPositions_)
+    for (int a = 0; a < 3; ++a)
+      boundsLo_[a] = std::min(boundsLo_[a], p[a]), boundsHi_[a] = std::max(boundsHi_[a], p[a]);
+  instanceTriangles_ = 0;
+  instanceDegenerate_ = 0;
+  for (uint32_t f = 0; f < nf; ++f) {
+    const uint32_t n = mesh.cornerCount(f);
+    (n >= 3 ? instanceTriangles_ : instanceDegenerate_) += n >= 3 ? n - 2 : 1;
+  }
   if (faceOrder && batches) prepareBatches(*faceOrder, *batches);
 }
 
@@ -125,8 +137,49 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) transformInstance(k, out);
 }
 
+bool FaceTransformer::instanceOutsideView(uint32_t instance) {
+  if (!prepared_) prepare();
+  if (slotPositions_.empty()) return false;
+  const Mat4& m = mvp_[instance];
+  // Clip coordinates are affine in the position, so over the box they are bounded by its
+  // corners. A vertex's own product rounds each of its four terms and three sums: within
+  // 2^-50 of reach[i], the sum of the terms' magnitudes. A plane rejects the instance only when
+  // every corner is beyond it by far more than that (1e-9 of the reach), so that every vertex's
+  // outcode has that plane's bit whatever the rounding.
+  double reach[4];
+  for (int i = 0; i < 4; ++i) {
+    reach[i] = std::abs(m(i, 3));
+    for (int j = 0; j < 3; ++j)
+      reach[i] += std::abs(m(i, j)) * std::max(std::abs(boundsLo_[j]), std::abs(boundsHi_[j]));
+    if (!(reach[i] < 1e300)) return false;  // NaN or huge: leave it to the vertices
+  }
+  // Plane i: 2a + s beyond it, for coordinate a = i / 2 against w, on side s = i % 2.
+  double beyond[6];
+  for (double& b : beyond) b = HUGE_VAL;
+  for (int c = 0; c < 8; ++c) {
+    const Vec3 p((c & 1) ? boundsHi_[0] : boundsLo_[0], (c & 2) ? boundsHi_[1] : boundsLo_[1],
+                 (c & 4) ? boundsHi_[2] : boundsLo_[2]);
+    const Vec4 clip = m * Vec4(p[0], p[1], p[2], 1.0);
+    for (int a = 0; a < 3; ++a) {
+      beyond[2 * a] = std::min(beyond[2 * a], -(clip[a] + clip[3]));       // a < -w
+      beyond[2 * a + 1] = std::min(beyond[2 * a + 1], clip[a] - clip[3]);  // a > w
+    }
+  }
+  for (int i = 0; i < 6; ++i)
+    if (beyond[i] > 1e-9 * (reach[i / 2] + reach[3])) return true;
+  return false;
+}
+
 void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
   if (!prepared_) prepare();
+  out.width = width_ * scale_;
+  out.height = height_ * scale_;
+  if (instanceOutsideView(instance)) {
+    // Every face would be clipped away (those of fewer than 3 corners: degenerate).
+    out.counters.clippedAway += instanceTriangles_;
+    out.counters.degenerate += instanceDegenerate_;
+    return;
+  }
   const Mesh& mesh = *scene_.mesh;
   const size_t slots = slotPositions_.size();
   instanceState_.resize(slots);

@@ -427,6 +427,59 @@ TEST(FaceTransformerTest, InstancesGiveWhatFaceByFaceGives) {
   }
 }
 
+TEST(FaceTransformerTest, InstancesWhollyOutsideTheViewAreOnlyCounted) {
+  // A tessellated unit square facing the eye (plus a face of two corners), repeated in a row
+  // across the view and in a column along it: instances beyond a side, behind the eye or
+  // beyond the far plane are skipped whole, one straddling the right side is not, and every
+  // face and counter comes out as when transformed face by face.
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  const int n = 4;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      f.push_back({a, a + 1, a + n + 2, a + n + 1});
+    }
+  f.push_back({0, 1});
+  const auto mesh = test::makeMesh(p, f);
+  // Eye at z = 2 looking down -z, 90 degrees: at z = 0 the view spans x, y in [-2, 2].
+  struct Case {
+    Grid grid;
+    std::vector<bool> outside;  // per instance
+  };
+  const std::vector<Case> cases = {
+      // x = -9, -6, -3, 0, 3, 6, 9: all but the middle one beyond a side.
+      {Grid{{7, 1, 1}, {3.0, 0.0, 0.0}}, {true, true, true, false, true, true, true}},
+      // y = -3, 0, 3: below and above.
+      {Grid{{1, 3, 1}, {0.0, 3.0, 0.0}}, {true, false, true}},
+      // z = -10 (beyond the far plane at distance 10), -5, 0, 5 and 10 (behind the eye).
+      {Grid{{1, 1, 5}, {0.0, 0.0, 5.0}}, {true, false, false, true, true}},
+      // x = -2, 0, 2: the outer two straddle the sides.
+      {Grid{{3, 1, 1}, {2.0, 0.0, 0.0}}, {false, false, false}},
+  };
+  Warnings warnings;
+  for (const Case& c : cases) {
+    SceneSettings s = test::tinySettings(64);
+    s.grid = c.grid;
+    const Scene scene = makeScene(s, mesh, warnings);
+    const Camera camera = makeCamera(scene);
+    const uint32_t nf = uint32_t(scene.mesh->faceCount());
+    FaceTransformer byFace(scene, camera, 1, true), byInstance(scene, camera, 1, true);
+    FrameGeometry expected, actual;
+    ASSERT_EQ(scene.instanceCount(), c.outside.size());
+    for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
+      EXPECT_EQ(byInstance.instanceOutsideView(k), bool(c.outside[k])) << "instance " << k;
+      for (uint32_t face = 0; face < nf; ++face) byFace.transformFace(k * nf + face, expected);
+      byInstance.transformInstance(k, actual);
+    }
+    EXPECT_GT(expected.triangles.size(), 0u);
+    EXPECT_GT(expected.counters.clippedAway, 0u);
+    expectSameGeometry(expected, actual, "instances");
+  }
+}
+
 // Drops every third face it is asked about and remembers what it was told.
 class RecordingFilter : public TriangleFilter {
  public:

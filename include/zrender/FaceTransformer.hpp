@@ -56,7 +56,13 @@ class FaceTransformer {
   // Every face of one instance, in face id order. The instance's vertices are computed first,
   // into arrays reused from instance to instance: they stay in cache while its faces read them
   // (for a grid, the whole model's would not).
+  // An instance whose box (of the positions faces use) lies wholly beyond one plane of the
+  // view volume, with margin, is only counted: every face of it would be clipped away.
   void transformInstance(uint32_t instance, FrameGeometry& out);
+
+  // Whether every vertex of the instance is, for certain, outside one and the same plane of
+  // the view volume (after beginFrame()).
+  bool instanceOutsideView(uint32_t instance);
 
   // One face (global id); its vertices are transformed on first use in this frame, into
   // per-vertex state for the whole model. For callers that pick faces one at a time; the octree
@@ -122,6 +128,9 @@ class FaceTransformer {
   std::vector<uint32_t> cornerSlots_;  // per mesh corner: its position's slot
   std::vector<VertexState> state_;     // per vertex
   std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth (read by faces that survive)
+  Vec3 boundsLo_{0, 0, 0}, boundsHi_{0, 0, 0};  // model space: box of slotPositions_
+  uint64_t instanceTriangles_ = 0;          // per instance: triangles of its faces of 3+ corners
+  uint64_t instanceDegenerate_ = 0;         // per instance: its faces of fewer than 3 corners
   std::vector<VertexState> instanceState_;  // transformInstance(): per slot, for one instance
   std::vector<Vec3> instanceWindow_;
   uint32_t frame_ = 0;
