@@ -199,9 +199,18 @@ void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
   out.width = width_ * scale_;
   out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
+  const uint32_t* faceStart = mesh.faceStart.data();
+  const VertexState* state = instanceState_.data();
   for (uint32_t f = 0; f < nf; ++f) {
-    const uint32_t n = mesh.cornerCount(f);
-    appendFace(instance * nf + f, FaceCorners{cornerSlots_.data() + mesh.faceStart[f], 0}, n, out);
+    const uint32_t first = faceStart[f], n = faceStart[f + 1] - first;
+    const FaceCorners corners{cornerSlots_.data() + first, 0};
+    // A triangle with every corner inside the view volume's planes and the guard band (most
+    // faces) goes straight to appendTriangle, where appendFace would send it after its checks.
+    if (n == 3 && (state[corners[0]].code | state[corners[1]].code | state[corners[2]].code) == 0) {
+      appendTriangle(instance * nf + f, corners, out);
+      continue;
+    }
+    appendFace(instance * nf + f, corners, n, out);
   }
 }
 
