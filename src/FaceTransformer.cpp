@@ -138,8 +138,13 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
 }
 
 bool FaceTransformer::instanceOutsideView(uint32_t instance) {
+  return viewOfInstance(instance).outside;
+}
+
+FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance) {
   if (!prepared_) prepare();
-  if (slotPositions_.empty()) return false;
+  InstanceView view;
+  if (slotPositions_.empty()) return view;
   const Mat4& m = mvp_[instance];
   // Clip coordinates are affine in the position, so over the box they are bounded by its
   // corners. A vertex's own product rounds each of its four terms and three sums: within
@@ -151,11 +156,12 @@ bool FaceTransformer::instanceOutsideView(uint32_t instance) {
     reach[i] = std::abs(m(i, 3));
     for (int j = 0; j < 3; ++j)
       reach[i] += std::abs(m(i, j)) * std::max(std::abs(boundsLo_[j]), std::abs(boundsHi_[j]));
-    if (!(reach[i] < 1e300)) return false;  // NaN or huge: leave it to the vertices
+    if (!(reach[i] < 1e300)) return view;  // NaN or huge: leave it to the vertices
   }
   // Plane i: 2a + s beyond it, for coordinate a = i / 2 against w, on side s = i % 2.
   double beyond[6];
   for (double& b : beyond) b = HUGE_VAL;
+  double minW = HUGE_VAL, minNdcZ = HUGE_VAL;
   for (int c = 0; c < 8; ++c) {
     const Vec3 p((c & 1) ? boundsHi_[0] : boundsLo_[0], (c & 2) ? boundsHi_[1] : boundsLo_[1],
                  (c & 4) ? boundsHi_[2] : boundsLo_[2]);
@@ -164,22 +170,39 @@ bool FaceTransformer::instanceOutsideView(uint32_t instance) {
       beyond[2 * a] = std::min(beyond[2 * a], -(clip[a] + clip[3]));       // a < -w
       beyond[2 * a + 1] = std::min(beyond[2 * a + 1], clip[a] - clip[3]);  // a > w
     }
+    minW = std::min(minW, clip[3]);
+    minNdcZ = std::min(minNdcZ, clip[2] / clip[3]);
   }
   for (int i = 0; i < 6; ++i)
-    if (beyond[i] > 1e-9 * (reach[i / 2] + reach[3])) return true;
-  return false;
+    if (beyond[i] > 1e-9 * (reach[i / 2] + reach[3])) view.outside = true;
+  // z / w over the box, where w > 0 throughout, is least at a corner (a ratio of affine
+  // functions is monotonic along every line). Each vertex's z / w is within 2^-49 of
+  // (reach[2] + |z / w| reach[3]) / w of its exact value, and so are the corners': 1e-9 of that
+  // bounds both with room to spare. The window depth is (z / w + 1) / 2.
+  if (minW > 1e-6 * reach[3] && std::isfinite(minNdcZ)) {
+    const double slack = 1e-9 * (reach[2] + (std::abs(minNdcZ) + 1.0) * reach[3]) / minW;
+    const double depth = (minNdcZ - slack + 1.0) * 0.5 - 1e-12;
+    if (depth > 0.0) {
+      float f = static_cast<float>(depth);
+      if (double(f) > depth) f = nextFloatTowardZero(f);
+      view.nearest = std::min(f, 1.0f);
+    }
+  }
+  return view;
 }
 
 void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
   if (!prepared_) prepare();
   out.width = width_ * scale_;
   out.height = height_ * scale_;
-  if (instanceOutsideView(instance)) {
+  const InstanceView instanceView = viewOfInstance(instance);
+  if (instanceView.outside) {
     // Every face would be clipped away (those of fewer than 3 corners: degenerate).
     out.counters.clippedAway += instanceTriangles_;
     out.counters.degenerate += instanceDegenerate_;
     return;
   }
+  instanceNearest_ = instanceView.nearest;
   const Mesh& mesh = *scene_.mesh;
   const size_t slots = slotPositions_.size();
   instanceState_.resize(slots);
@@ -223,6 +246,7 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
     vertexWindow_.resize(slots * scene_.instanceCount());
   }
   view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr, 0};
+  instanceNearest_ = 0.0f;
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
   out.width = width_ * scale_;
@@ -246,6 +270,7 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
   }
   view_ = VertexView{batchState_.data(), batchWindow_.data(), batchVertexSlot_.data() + v0,
                      batchVertexInstance_.data() + v0, 0};
+  instanceNearest_ = 0.0f;
   const uint32_t* slot = view_.slot;
   const uint32_t* instance = view_.instance;
   uint32_t i = 0;
@@ -437,9 +462,13 @@ void FaceTransformer::appendTriangle(uint32_t faceId, FaceCorners corners, Frame
     counters.backfaceCulled += 1;
     return;
   }
+  const FixedPoint points[3] = {a, b, c};
+  // First with the instance's nearest depth, which needs no more loads: enough for a face of
+  // an instance wholly behind what is drawn there.
+  if (filter_ && instanceNearest_ > 0.0f && filter_->hidden(points, instanceNearest_, faceId))
+    return;
   const Vec3 window[3] = {view_.window[corners[0]], view_.window[corners[1]],
                           view_.window[corners[2]]};
-  const FixedPoint points[3] = {a, b, c};
   if (filter_ && filter_->hidden(points, nearestCornerDepth(window, 3), faceId)) return;
   bool ok = false;
   const DepthPlane plane = planeOf(window, 3, ok);

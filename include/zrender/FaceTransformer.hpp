@@ -18,8 +18,10 @@ namespace zrender {
 class TriangleFilter {
  public:
   virtual ~TriangleFilter() = default;
-  // `v`: the snapped corners (samples, either winding); `nearestDepth`: the least window depth
-  // of the corners, as the face's DepthPlane::minDepth() will be. True drops the face.
+  // `v`: the snapped corners (samples, either winding); `nearestDepth`: a window depth no
+  // sample of the face is nearer than. It may be asked twice about a face: first with a bound
+  // for its whole instance, then with the least depth of its corners, exactly as the face's
+  // DepthPlane::minDepth() will be. True drops the face.
   virtual bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) = 0;
 };
 
@@ -63,6 +65,15 @@ class FaceTransformer {
   // Whether every vertex of the instance is, for certain, outside one and the same plane of
   // the view volume (after beginFrame()).
   bool instanceOutsideView(uint32_t instance);
+
+  // What the box of an instance's positions tells about all its vertices: whether they are all
+  // outside one plane of the view volume, and a window depth none of them is nearer than (0
+  // when the box reaches the eye plane).
+  struct InstanceView {
+    bool outside = false;
+    float nearest = 0.0f;
+  };
+  InstanceView viewOfInstance(uint32_t instance);
 
   // One face (global id); its vertices are transformed on first use in this frame, into
   // per-vertex state for the whole model. For callers that pick faces one at a time; the octree
@@ -129,8 +140,9 @@ class FaceTransformer {
   std::vector<VertexState> state_;     // per vertex
   std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth (read by faces that survive)
   Vec3 boundsLo_{0, 0, 0}, boundsHi_{0, 0, 0};  // model space: box of slotPositions_
-  uint64_t instanceTriangles_ = 0;          // per instance: triangles of its faces of 3+ corners
-  uint64_t instanceDegenerate_ = 0;         // per instance: its faces of fewer than 3 corners
+  uint64_t instanceTriangles_ = 0;   // per instance: triangles of its faces of 3+ corners
+  uint64_t instanceDegenerate_ = 0;  // per instance: its faces of fewer than 3 corners
+  float instanceNearest_ = 0.0f;     // the instance being transformed: viewOfInstance().nearest
   std::vector<VertexState> instanceState_;  // transformInstance(): per slot, for one instance
   std::vector<Vec3> instanceWindow_;
   uint32_t frame_ = 0;
