@@ -203,6 +203,8 @@ void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
     return;
   }
   instanceNearest_ = instanceView.nearest;
+  hiddenTiles_ =
+      filter_ && instanceNearest_ > 0.0f ? filter_->beginInstance(instanceNearest_) : HiddenTiles();
   const Mesh& mesh = *scene_.mesh;
   const size_t slots = slotPositions_.size();
   instanceState_.resize(slots);
@@ -247,6 +249,7 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
   }
   view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr, 0};
   instanceNearest_ = 0.0f;
+  hiddenTiles_ = HiddenTiles();
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
   out.width = width_ * scale_;
@@ -271,6 +274,7 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
   view_ = VertexView{batchState_.data(), batchWindow_.data(), batchVertexSlot_.data() + v0,
                      batchVertexInstance_.data() + v0, 0};
   instanceNearest_ = 0.0f;
+  hiddenTiles_ = HiddenTiles();
   const uint32_t* slot = view_.slot;
   const uint32_t* instance = view_.instance;
   uint32_t i = 0;
@@ -463,10 +467,28 @@ void FaceTransformer::appendTriangle(uint32_t faceId, FaceCorners corners, Frame
     return;
   }
   const FixedPoint points[3] = {a, b, c};
-  // First with the instance's nearest depth, which needs no more loads: enough for a face of
-  // an instance wholly behind what is drawn there.
-  if (filter_ && instanceNearest_ > 0.0f && filter_->hidden(points, instanceNearest_, faceId))
-    return;
+  // First where the instance's nearest depth is hidden, which needs no more loads: enough for
+  // a face of an instance wholly behind what is drawn there.
+  if (hiddenTiles_.marked) {
+    const int minX = std::max(firstSampleAtOrAfter(std::min(std::min(a.x, b.x), c.x)), 0);
+    const int maxX =
+        std::min(lastSampleAtOrBefore(std::max(std::max(a.x, b.x), c.x)), out.width - 1);
+    const int minY = std::max(firstSampleAtOrAfter(std::min(std::min(a.y, b.y), c.y)), 0);
+    const int maxY =
+        std::min(lastSampleAtOrBefore(std::max(std::max(a.y, b.y), c.y)), out.height - 1);
+    if (minX <= maxX && minY <= maxY) {
+      const int shift = hiddenTiles_.tileShift;
+      const int x0 = minX >> shift, x1 = maxX >> shift, y0 = minY >> shift, y1 = maxY >> shift;
+      if (x1 - x0 <= 1 && y1 - y0 <= 1) {
+        const uint8_t* r0 = hiddenTiles_.marked + size_t(y0) * size_t(hiddenTiles_.tilesX);
+        const uint8_t* r1 = hiddenTiles_.marked + size_t(y1) * size_t(hiddenTiles_.tilesX);
+        if (r0[x0] & r0[x1] & r1[x0] & r1[x1]) {
+          ++counters.filtered;
+          return;
+        }
+      }
+    }
+  }
   const Vec3 window[3] = {view_.window[corners[0]], view_.window[corners[1]],
                           view_.window[corners[2]]};
   if (filter_ && filter_->hidden(points, nearestCornerDepth(window, 3), faceId)) return;

@@ -53,6 +53,12 @@ class PyramidFilter : public TriangleFilter {
  public:
   PyramidFilter(const HzbRasterizer& rasterizer, RenderStats& stats)
       : rasterizer_(rasterizer), stats_(stats) {}
+  // The tiles where even the instance's nearest depth (with the smallest id) is behind.
+  HiddenTiles beginInstance(float nearestDepth) override {
+    const DepthPyramid& pyramid = rasterizer_.pyramid();
+    pyramid.tilesBehind(makeDepthKey(nearestDepth, 0), hiddenTiles_);
+    return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, pyramid.tilesX()};
+  }
   bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
     return rasterizer_.rejects(v, nearestDepth, faceId, stats_);
   }
@@ -60,6 +66,7 @@ class PyramidFilter : public TriangleFilter {
  private:
   const HzbRasterizer& rasterizer_;
   RenderStats& stats_;
+  std::vector<uint8_t> hiddenTiles_;  // per pyramid tile, for the current instance
 };
 
 }  // namespace
@@ -118,6 +125,7 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
     }
   }
   rasterizer_.finish();
+  stats.trianglesHzbCulled += g.counters.filtered;
 }
 
 }  // namespace zrender

@@ -546,6 +546,81 @@ TEST(FaceTransformerTest, InstanceNearestDepthBoundsEveryFaceTightly) {
   EXPECT_GT(zero, 0);
 }
 
+// Marks the tiles of the left half of a 128-sample-wide image as hidden, for every instance.
+class LeftHalfFilter : public TriangleFilter {
+ public:
+  std::vector<uint8_t> marked = std::vector<uint8_t>(8 * 8, 0);
+  std::vector<float> bounds;  // what beginInstance() was told
+  LeftHalfFilter() {
+    for (int ty = 0; ty < 8; ++ty)
+      for (int tx = 0; tx < 4; ++tx) marked[size_t(ty * 8 + tx)] = 1;
+  }
+  HiddenTiles beginInstance(float nearestDepth) override {
+    bounds.push_back(nearestDepth);
+    return HiddenTiles{marked.data(), 4, 8};
+  }
+  bool hidden(const FixedPoint*, float, uint32_t) override { return false; }
+};
+
+TEST(FaceTransformerTest, FacesInHiddenTilesAreDroppedBeforeTheirDepths) {
+  // A grid of tessellated squares in front of the eye, on a 128 x 128 image of 8 x 8 tiles
+  // whose left half the filter marks: a face whose sample bounds lie in at most 2 x 2 marked
+  // tiles is dropped and counted as filtered, every other face comes out as without the filter.
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  const int n = 7;  // odd: faces of the middle square straddle the image centre
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, 0.0);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      f.push_back({a, a + 1, a + n + 2});
+      f.push_back({a, a + n + 2, a + n + 1});
+    }
+  SceneSettings s = test::tinySettings(128);
+  s.grid = Grid{{3, 2, 1}, {1.2, 1.2, 0.0}};
+  s.eye = Vec3(0.0, 0.0, 2.5);
+  Warnings warnings;
+  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const Camera camera = makeCamera(scene);
+  FaceTransformer plain(scene, camera, 1, true), filtered(scene, camera, 1, true);
+  LeftHalfFilter filter;
+  filtered.setFilter(&filter);
+  FrameGeometry expected, actual;
+  for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
+    plain.transformInstance(k, expected);
+    filtered.transformInstance(k, actual);
+  }
+  EXPECT_EQ(filter.bounds.size(), scene.instanceCount());
+  for (float b : filter.bounds) EXPECT_GT(b, 0.0f);
+  std::map<uint32_t, size_t> kept;
+  for (size_t i = 0; i < actual.faces.size(); ++i) kept[actual.faces[i].id] = i;
+  uint64_t dropped = 0, straddling = 0;
+  for (const ScreenFace& face : expected.faces) {
+    const ScreenTriangle& t = expected.triangles[face.firstTriangle];
+    TriangleSetup bounds;
+    ASSERT_TRUE(bounds.bounds(t.v, 128, 128));
+    const bool inLeft = (bounds.maxX >> 4) < 4;
+    const bool small = (bounds.maxX >> 4) - (bounds.minX >> 4) <= 1 &&
+                       (bounds.maxY >> 4) - (bounds.minY >> 4) <= 1;
+    if (inLeft && small) {
+      EXPECT_EQ(kept.count(face.id), 0u) << face.id;
+      ++dropped;
+      continue;
+    }
+    straddling += (bounds.minX >> 4) < 4;
+    ASSERT_EQ(kept.count(face.id), 1u) << face.id;
+    const ScreenTriangle& u = actual.triangles[actual.faces[kept[face.id]].firstTriangle];
+    EXPECT_TRUE(t.v[0] == u.v[0] && t.v[1] == u.v[1] && t.v[2] == u.v[2] &&
+                t.plane.loBits == u.plane.loBits && t.plane.c == u.plane.c);
+  }
+  EXPECT_GT(dropped, 50u);
+  EXPECT_GT(straddling, 5u);
+  EXPECT_EQ(actual.counters.filtered, dropped);
+  EXPECT_EQ(actual.faces.size(), expected.faces.size() - dropped);
+  EXPECT_EQ(expected.counters.filtered, 0u);
+}
+
 // Drops every third face it is asked about and remembers what it was told.
 class RecordingFilter : public TriangleFilter {
  public:

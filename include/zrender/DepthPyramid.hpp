@@ -94,6 +94,15 @@ class DepthPyramid {
     return occludesSlow(x0, y0, x1, y1, key, maxNodes);
   }
 
+  // Sets hidden[t] (one byte per tile, row by row) to whether `key` is greater than every key
+  // of tile t: valid until the pyramid changes.
+  void tilesBehind(DepthKey key, std::vector<uint8_t>& hidden) const {
+    const std::vector<DepthKey>& tiles = levels_[0];
+    hidden.resize(tiles.size());
+    for (size_t t = 0; t < tiles.size(); ++t) hidden[t] = key > tiles[t];
+  }
+  int tilesX() const { return tilesX_; }
+
   // Clears the tiles that no triangle reached; the buffer is then final.
   void finish();
 

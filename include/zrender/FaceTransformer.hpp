@@ -15,9 +15,21 @@ namespace zrender {
 // A test the transform asks about a triangle face before setting up its depth plane and
 // storing it, for algorithms that can prove it hidden from its corners alone (the z-pyramid):
 // such faces then cost no more than a back face.
+// Screen tiles where every face of the instance being transformed is proved hidden.
+struct HiddenTiles {
+  const uint8_t* marked = nullptr;  // per tile, row by row, nonzero when hidden; null: none
+  int tileShift = 0;                // tiles of 2^tileShift x 2^tileShift samples
+  int tilesX = 0;                   // tiles per row
+};
+
 class TriangleFilter {
  public:
   virtual ~TriangleFilter() = default;
+  // Before the faces of an instance (transformInstance()), none of which has a sample nearer
+  // than window depth `nearestDepth` (> 0): the tiles where that bound is already hidden. A
+  // face whose sample bounds lie in at most 2 x 2 of them is then dropped before its depths
+  // are loaded (and counted in TransformCounters::filtered). Valid until the next call.
+  virtual HiddenTiles beginInstance(float /*nearestDepth*/) { return HiddenTiles(); }
   // `v`: the snapped corners (samples, either winding); `nearestDepth`: a window depth no
   // sample of the face is nearer than. It may be asked twice about a face: first with a bound
   // for its whole instance, then with the least depth of its corners, exactly as the face's
@@ -143,6 +155,7 @@ class FaceTransformer {
   uint64_t instanceTriangles_ = 0;   // per instance: triangles of its faces of 3+ corners
   uint64_t instanceDegenerate_ = 0;  // per instance: its faces of fewer than 3 corners
   float instanceNearest_ = 0.0f;     // the instance being transformed: viewOfInstance().nearest
+  HiddenTiles hiddenTiles_;          // and what the filter said of that bound
   std::vector<VertexState> instanceState_;  // transformInstance(): per slot, for one instance
   std::vector<Vec3> instanceWindow_;
   uint32_t frame_ = 0;
