@@ -331,6 +331,26 @@ void expectSameGeometry(const FrameGeometry& a, const FrameGeometry& b, const st
   EXPECT_EQ(a.counters.degenerate, b.counters.degenerate) << what;
 }
 
+// A unit square in the z = 0 plane (raised by wave * sin(i + 2 j) at grid point (i, j)), cut
+// into n x n cells facing +z: quads, or two triangles each.
+void addTessellatedSquare(int n, bool quads, double wave, std::vector<Vec3>& p,
+                          std::vector<std::vector<int>>& f) {
+  const int b = int(p.size());
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, wave * std::sin(i + 2.0 * j));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = b + j * (n + 1) + i;
+      if (quads) {
+        f.push_back({a, a + 1, a + n + 2, a + n + 1});
+      } else {
+        f.push_back({a, a + 1, a + n + 2});
+        f.push_back({a, a + n + 2, a + n + 1});
+      }
+    }
+}
+
 // The scene of the transform tests: quads, mixed triangles and a concave polygon on a floor
 // that crosses the near plane and leaves the image, plus a face that snaps to fewer than three
 // corners, in a grid of 3 x 1 x 2 instances.
@@ -434,14 +454,7 @@ TEST(FaceTransformerTest, InstancesWhollyOutsideTheViewAreOnlyCounted) {
   // face and counter comes out as when transformed face by face.
   std::vector<Vec3> p;
   std::vector<std::vector<int>> f;
-  const int n = 4;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      f.push_back({a, a + 1, a + n + 2, a + n + 1});
-    }
+  addTessellatedSquare(4, true, 0.0, p, f);
   f.push_back({0, 1});
   const auto mesh = test::makeMesh(p, f);
   // Eye at z = 2 looking down -z, 90 degrees: at z = 0 the view spans x, y in [-2, 2].
@@ -491,16 +504,7 @@ TEST(FaceTransformerTest, InstanceNearestDepthBoundsEveryFaceTightly) {
   for (double wave : {0.3, 0.0}) {
     std::vector<Vec3> p;
     std::vector<std::vector<int>> f;
-    const int n = 6;
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, wave * std::sin(i + 2.0 * j));
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const int a = j * (n + 1) + i;
-        f.push_back({a, a + 1, a + n + 2});
-        f.push_back({a, a + n + 2, a + n + 1});
-      }
+    addTessellatedSquare(6, false, wave, p, f);
     const auto mesh = test::makeMesh(p, f);
     for (const Vec3& eye : {Vec3(0.0, 0.0, 3.0), Vec3(1.0, 0.7, 4.0), Vec3(-0.4, 0.2, 1.2)}) {
       SceneSettings s = test::tinySettings(96);
@@ -546,6 +550,19 @@ TEST(FaceTransformerTest, InstanceNearestDepthBoundsEveryFaceTightly) {
   EXPECT_GT(zero, 0);
 }
 
+// Every instance of the scene (culling on), into `plain` without a filter and into `filtered`
+// with `filter`.
+void transformWithAndWithout(const Scene& scene, TriangleFilter& filter, FrameGeometry& plain,
+                             FrameGeometry& filtered) {
+  const Camera camera = makeCamera(scene);
+  FaceTransformer without(scene, camera, 1, true), with(scene, camera, 1, true);
+  with.setFilter(&filter);
+  for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
+    without.transformInstance(k, plain);
+    with.transformInstance(k, filtered);
+  }
+}
+
 // Marks the tiles of the left half of a 128-sample-wide image as hidden, for every instance.
 class LeftHalfFilter : public TriangleFilter {
  public:
@@ -568,29 +585,16 @@ TEST(FaceTransformerTest, FacesInHiddenTilesAreDroppedBeforeTheirDepths) {
   // tiles is dropped and counted as filtered, every other face comes out as without the filter.
   std::vector<Vec3> p;
   std::vector<std::vector<int>> f;
-  const int n = 7;  // odd: faces of the middle square straddle the image centre
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      f.push_back({a, a + 1, a + n + 2});
-      f.push_back({a, a + n + 2, a + n + 1});
-    }
+  addTessellatedSquare(7, false, 0.0, p,
+                       f);  // odd: faces of the middle square straddle the image centre
   SceneSettings s = test::tinySettings(128);
   s.grid = Grid{{3, 2, 1}, {1.2, 1.2, 0.0}};
   s.eye = Vec3(0.0, 0.0, 2.5);
   Warnings warnings;
   const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
-  const Camera camera = makeCamera(scene);
-  FaceTransformer plain(scene, camera, 1, true), filtered(scene, camera, 1, true);
   LeftHalfFilter filter;
-  filtered.setFilter(&filter);
   FrameGeometry expected, actual;
-  for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-    plain.transformInstance(k, expected);
-    filtered.transformInstance(k, actual);
-  }
+  transformWithAndWithout(scene, filter, expected, actual);
   EXPECT_EQ(filter.bounds.size(), scene.instanceCount());
   for (float b : filter.bounds) EXPECT_GT(b, 0.0f);
   std::map<uint32_t, size_t> kept;
@@ -638,15 +642,9 @@ class RecordingFilter : public TriangleFilter {
 TEST(FaceTransformerTest, FilterSeesTheFaceAsDrawnAndDropsOnlyWhatItRejects) {
   SceneSettings s;
   const Scene scene = floorGridScene(s);
-  const Camera camera = makeCamera(scene);
-  FaceTransformer plain(scene, camera, 1, true), filtered(scene, camera, 1, true);
   RecordingFilter filter;
-  filtered.setFilter(&filter);
   FrameGeometry expected, actual;
-  for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-    plain.transformInstance(k, expected);
-    filtered.transformInstance(k, actual);
-  }
+  transformWithAndWithout(scene, filter, expected, actual);
   std::map<uint32_t, size_t> actualFace;
   for (size_t i = 0; i < actual.faces.size(); ++i) actualFace[actual.faces[i].id] = i;
   size_t dropped = 0, keptAsked = 0, notAsked = 0;
@@ -988,15 +986,7 @@ TEST(HierarchicalExactTest, NearestInstanceFirstHidesTheOthersBeforeTheirSetUp) 
   // behind it is proved hidden (most already in the transform, without set-up).
   std::vector<Vec3> p;
   std::vector<std::vector<int>> f;
-  const int n = 10;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) p.emplace_back(-0.5 + double(i) / n, -0.5 + double(j) / n, 0.0);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      f.push_back({a, a + 1, a + n + 2});
-      f.push_back({a, a + n + 2, a + n + 1});
-    }
+  addTessellatedSquare(10, false, 0.0, p, f);
   SceneSettings s = test::tinySettings(128);
   s.grid = Grid{{1, 1, 4}, {0.0, 0.0, 0.5}};  // z = -0.75, -0.25, 0.25, 0.75
   // The last instance is the nearest and covers two thirds of the image, all of the tiles the
