@@ -3,6 +3,7 @@
 #include <immintrin.h>
 
 #include <cmath>
+#include <cstddef>
 
 namespace zrender {
 
@@ -58,14 +59,17 @@ __attribute__((target("avx2"))) void projectVertices4Avx2(const Mat4& mvp,
     finite =
         _mm256_and_pd(finite, _mm256_cmp_pd(_mm256_andnot_pd(signBit, c[i]), infinity, _CMP_LT_OQ));
   const __m256d minusW = _mm256_xor_pd(c[3], signBit);
-  // Per outcode bit, a 4-bit mask of the lanes that have it.
-  const int below[3] = {_mm256_movemask_pd(_mm256_cmp_pd(c[0], minusW, _CMP_LT_OQ)),
-                        _mm256_movemask_pd(_mm256_cmp_pd(c[1], minusW, _CMP_LT_OQ)),
-                        _mm256_movemask_pd(_mm256_cmp_pd(c[2], minusW, _CMP_LT_OQ))};
-  const int above[3] = {_mm256_movemask_pd(_mm256_cmp_pd(c[0], c[3], _CMP_GT_OQ)),
-                        _mm256_movemask_pd(_mm256_cmp_pd(c[1], c[3], _CMP_GT_OQ)),
-                        _mm256_movemask_pd(_mm256_cmp_pd(c[2], c[3], _CMP_GT_OQ))};
-  const int finiteLanes = _mm256_movemask_pd(finite);
+  // The outcode of each lane as a 64-bit integer: each comparison (all ones where true) keeps
+  // its bit (VertexCode: kLeft << 2i below, kRight << 2i above, for x, y, z).
+  __m256i code = _mm256_setzero_si256();
+  for (int i = 0; i < 3; ++i) {
+    const __m256i below = _mm256_castpd_si256(_mm256_cmp_pd(c[i], minusW, _CMP_LT_OQ));
+    const __m256i above = _mm256_castpd_si256(_mm256_cmp_pd(c[i], c[3], _CMP_GT_OQ));
+    code = _mm256_or_si256(code,
+                           _mm256_and_si256(below, _mm256_set1_epi64x(int64_t(kLeft) << (2 * i))));
+    code = _mm256_or_si256(code,
+                           _mm256_and_si256(above, _mm256_set1_epi64x(int64_t(kRight) << (2 * i))));
+  }
 
   const __m256d half = _mm256_set1_pd(0.5);
   const __m256d invW = _mm256_div_pd(one, c[3]);
@@ -77,36 +81,41 @@ __attribute__((target("avx2"))) void projectVertices4Avx2(const Mat4& mvp,
                     _mm256_set1_pd(double(viewport.height)));
   const __m256d wz = _mm256_mul_pd(_mm256_add_pd(_mm256_mul_pd(c[2], invW), one), half);
   const __m256d guard = _mm256_set1_pd(kGuardBand / viewport.scale);
-  const int outside = _mm256_movemask_pd(
+  // kGuard where inside near and far but beyond the guard band; kNotFinite alone where a clip
+  // coordinate is NaN or infinite.
+  const __m256i outside = _mm256_castpd_si256(
       _mm256_or_pd(_mm256_cmp_pd(_mm256_andnot_pd(signBit, wx), guard, _CMP_GT_OQ),
                    _mm256_cmp_pd(_mm256_andnot_pd(signBit, wy), guard, _CMP_GT_OQ)));
+  const __m256i insideNearFar = _mm256_cmpeq_epi64(
+      _mm256_and_si256(code, _mm256_set1_epi64x(kNear | kFar)), _mm256_setzero_si256());
+  code = _mm256_or_si256(
+      code, _mm256_and_si256(_mm256_and_si256(insideNearFar, outside), _mm256_set1_epi64x(kGuard)));
+  code = _mm256_blendv_epi8(_mm256_set1_epi64x(kNotFinite), code, _mm256_castpd_si256(finite));
+  // Low halves of the four 64-bit codes.
+  const __m128i codes = _mm256_castsi256_si128(
+      _mm256_permutevar8x32_epi32(code, _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6)));
+
   const __m256d subpixel = _mm256_set1_pd(double(kSubpixel));
   const __m128i scale = _mm_set1_epi32(viewport.scale);
-  alignas(16) int32_t sx[4], sy[4];
-  _mm_store_si128(reinterpret_cast<__m128i*>(sx),
-                  _mm_mullo_epi32(_mm256_cvtpd_epi32(_mm256_mul_pd(wx, subpixel)), scale));
-  _mm_store_si128(reinterpret_cast<__m128i*>(sy),
-                  _mm_mullo_epi32(_mm256_cvtpd_epi32(_mm256_mul_pd(wy, subpixel)), scale));
+  const __m128i sx = _mm_mullo_epi32(_mm256_cvtpd_epi32(_mm256_mul_pd(wx, subpixel)), scale);
+  const __m128i sy = _mm_mullo_epi32(_mm256_cvtpd_epi32(_mm256_mul_pd(wy, subpixel)), scale);
+  // Lane k's state is (sx, sy, code, frame): a 4 x 4 transpose, one 16-byte store each.
+  static_assert(sizeof(VertexState) == 16 && offsetof(VertexState, code) == 8 &&
+                    offsetof(VertexState, frame) == 12,
+                "VertexState is snapped x, y, code, frame");
+  const __m128i xy01 = _mm_unpacklo_epi32(sx, sy), xy23 = _mm_unpackhi_epi32(sx, sy);
+  const __m128i frames = _mm_set1_epi32(int32_t(frame));
+  const __m128i cf01 = _mm_unpacklo_epi32(codes, frames), cf23 = _mm_unpackhi_epi32(codes, frames);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&states[0]), _mm_unpacklo_epi64(xy01, cf01));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&states[1]), _mm_unpackhi_epi64(xy01, cf01));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&states[2]), _mm_unpacklo_epi64(xy23, cf23));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(&states[3]), _mm_unpackhi_epi64(xy23, cf23));
+
   alignas(32) double lx[4], ly[4], lz[4];
   _mm256_store_pd(lx, wx);
   _mm256_store_pd(ly, wy);
   _mm256_store_pd(lz, wz);
-
-  for (int k = 0; k < 4; ++k) {
-    VertexState& s = states[k];
-    s.frame = frame;
-    s.snapped = FixedPoint{sx[k], sy[k]};
-    windows[k] = Vec3(lx[k], ly[k], lz[k]);
-    if (!(finiteLanes >> k & 1)) {
-      s.code = kNotFinite;
-      continue;
-    }
-    uint32_t code = 0;
-    for (int i = 0; i < 3; ++i)
-      code |= uint32_t(below[i] >> k & 1) << (2 * i) | uint32_t(above[i] >> k & 1) << (2 * i + 1);
-    if (!(code & (kNear | kFar)) && (outside >> k & 1)) code |= kGuard;
-    s.code = code;
-  }
+  for (int k = 0; k < 4; ++k) windows[k] = Vec3(lx[k], ly[k], lz[k]);
 }
 
 }  // namespace zrender
