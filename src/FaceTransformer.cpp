@@ -133,6 +133,39 @@ void FaceTransformer::computeVertex(const Mat4& mvp, const Vec3& position, size_
   projectVertex(mvp, position, viewport_, frame_, view_.state[vertex], view_.window[vertex]);
 }
 
+// Inline here: the per-face loop of transformInstance() runs it for most faces.
+inline bool FaceTransformer::droppedBeforeDepths(const FixedPoint& a, const FixedPoint& b,
+                                                 const FixedPoint& c, int64_t area,
+                                                 FrameGeometry& out) const {
+  TransformCounters& counters = out.counters;
+  if (area == 0) {
+    counters.degenerate += 1;
+    return true;
+  }
+  // y points down in window space, so counter-clockwise in NDC is a negative area here.
+  if (cull_ && area > 0) {
+    counters.backfaceCulled += 1;
+    return true;
+  }
+  // Where the instance's nearest depth is hidden, which needs no depth loaded: enough for a
+  // face of an instance wholly behind what is drawn there.
+  if (!hiddenTiles_.marked) return false;
+  const int minX = std::max(firstSampleAtOrAfter(std::min(std::min(a.x, b.x), c.x)), 0);
+  const int maxX = std::min(lastSampleAtOrBefore(std::max(std::max(a.x, b.x), c.x)), out.width - 1);
+  const int minY = std::max(firstSampleAtOrAfter(std::min(std::min(a.y, b.y), c.y)), 0);
+  const int maxY =
+      std::min(lastSampleAtOrBefore(std::max(std::max(a.y, b.y), c.y)), out.height - 1);
+  if (minX > maxX || minY > maxY) return false;
+  const int shift = hiddenTiles_.tileShift;
+  const int x0 = minX >> shift, x1 = maxX >> shift, y0 = minY >> shift, y1 = maxY >> shift;
+  if (x1 - x0 > 1 || y1 - y0 > 1) return false;
+  const uint8_t* r0 = hiddenTiles_.marked + size_t(y0) * size_t(hiddenTiles_.tilesX);
+  const uint8_t* r1 = hiddenTiles_.marked + size_t(y1) * size_t(hiddenTiles_.tilesX);
+  if (!(r0[x0] & r0[x1] & r1[x0] & r1[x1])) return false;
+  ++counters.filtered;
+  return true;
+}
+
 void FaceTransformer::transformAll(FrameGeometry& out) {
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) transformInstance(k, out);
 }
@@ -232,7 +265,12 @@ void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
     // A triangle with every corner inside the view volume's planes and the guard band (most
     // faces) goes straight to appendTriangle, where appendFace would send it after its checks.
     if (n == 3 && (state[corners[0]].code | state[corners[1]].code | state[corners[2]].code) == 0) {
-      appendTriangle(instance * nf + f, corners, out);
+      const FixedPoint& a = state[corners[0]].snapped;
+      const FixedPoint& b = state[corners[1]].snapped;
+      const FixedPoint& c = state[corners[2]].snapped;
+      const int64_t area = orient2d(a, b, c);
+      if (!droppedBeforeDepths(a, b, c, area, out))
+        appendTriangleDepths(instance * nf + f, corners, area < 0, out);
       continue;
     }
     appendFace(instance * nf + f, corners, n, out);
@@ -451,51 +489,25 @@ void FaceTransformer::appendFace(uint32_t faceId, FaceCorners corners, uint32_t 
 void FaceTransformer::appendTriangle(uint32_t faceId, FaceCorners corners, FrameGeometry& out) {
   // The common case, kept short: a triangle inside near/far and the guard band. Same result
   // as appendSnappedFace() would give, without its scratch buffers.
-  TransformCounters& counters = out.counters;
   const FixedPoint& a = view_.state[corners[0]].snapped;
   const FixedPoint& b = view_.state[corners[1]].snapped;
   const FixedPoint& c = view_.state[corners[2]].snapped;
   const int64_t area = orient2d(a, b, c);
-  if (area == 0) {
-    counters.degenerate += 1;
-    return;
-  }
-  // y points down in window space, so counter-clockwise in NDC is a negative area here.
-  const bool frontFacing = area < 0;
-  if (cull_ && !frontFacing) {
-    counters.backfaceCulled += 1;
-    return;
-  }
-  const FixedPoint points[3] = {a, b, c};
-  // First where the instance's nearest depth is hidden, which needs no more loads: enough for
-  // a face of an instance wholly behind what is drawn there.
-  if (hiddenTiles_.marked) {
-    const int minX = std::max(firstSampleAtOrAfter(std::min(std::min(a.x, b.x), c.x)), 0);
-    const int maxX =
-        std::min(lastSampleAtOrBefore(std::max(std::max(a.x, b.x), c.x)), out.width - 1);
-    const int minY = std::max(firstSampleAtOrAfter(std::min(std::min(a.y, b.y), c.y)), 0);
-    const int maxY =
-        std::min(lastSampleAtOrBefore(std::max(std::max(a.y, b.y), c.y)), out.height - 1);
-    if (minX <= maxX && minY <= maxY) {
-      const int shift = hiddenTiles_.tileShift;
-      const int x0 = minX >> shift, x1 = maxX >> shift, y0 = minY >> shift, y1 = maxY >> shift;
-      if (x1 - x0 <= 1 && y1 - y0 <= 1) {
-        const uint8_t* r0 = hiddenTiles_.marked + size_t(y0) * size_t(hiddenTiles_.tilesX);
-        const uint8_t* r1 = hiddenTiles_.marked + size_t(y1) * size_t(hiddenTiles_.tilesX);
-        if (r0[x0] & r0[x1] & r1[x0] & r1[x1]) {
-          ++counters.filtered;
-          return;
-        }
-      }
-    }
-  }
+  if (droppedBeforeDepths(a, b, c, area, out)) return;
+  appendTriangleDepths(faceId, corners, area < 0, out);
+}
+
+void FaceTransformer::appendTriangleDepths(uint32_t faceId, FaceCorners corners, bool frontFacing,
+                                           FrameGeometry& out) {
+  const FixedPoint points[3] = {view_.state[corners[0]].snapped, view_.state[corners[1]].snapped,
+                                view_.state[corners[2]].snapped};
   const Vec3 window[3] = {view_.window[corners[0]], view_.window[corners[1]],
                           view_.window[corners[2]]};
   if (filter_ && filter_->hidden(points, nearestCornerDepth(window, 3), faceId)) return;
   bool ok = false;
   const DepthPlane plane = planeOf(window, 3, ok);
   if (!ok) {
-    counters.degenerate += 1;
+    out.counters.degenerate += 1;
     return;
   }
   const std::array<uint32_t, 3> piece = orientedPiece(frontFacing);

@@ -132,6 +132,12 @@ class FaceTransformer {
   };
   void appendFace(uint32_t faceId, FaceCorners corners, uint32_t count, FrameGeometry& out);
   void appendTriangle(uint32_t faceId, FaceCorners corners, FrameGeometry& out);
+  // appendTriangle() in two steps: the checks that need only the snapped corners (degenerate,
+  // back face, hidden tiles: counted, true when the face goes no further), then the rest.
+  bool droppedBeforeDepths(const FixedPoint& a, const FixedPoint& b, const FixedPoint& c,
+                           int64_t area, FrameGeometry& out) const;
+  void appendTriangleDepths(uint32_t faceId, FaceCorners corners, bool frontFacing,
+                            FrameGeometry& out);
   void appendClippedFace(uint32_t faceId, FaceCorners corners, uint32_t count, uint64_t pieces,
                          FrameGeometry& out);
   void appendSnappedFace(uint32_t faceId, const DepthPlane& plane, uint64_t pieces,
