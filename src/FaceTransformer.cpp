@@ -340,8 +340,20 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
     const uint32_t faceId = batchFaces_[i];
     // The stored count spares a division on the face's path (0: too many to store).
     const uint32_t n = batchFaceCorners_[i] ? batchFaceCorners_[i] : mesh.cornerCount(faceId % nf);
-    appendFace(faceId, FaceCorners{local, 0}, n, out);
+    const FaceCorners corners{local, 0};
     local += n;
+    // As in transformInstance(): most faces are triangles wholly inside.
+    const VertexState* state = view_.state;
+    if (n == 3 && (state[corners[0]].code | state[corners[1]].code | state[corners[2]].code) == 0) {
+      const FixedPoint& a = state[corners[0]].snapped;
+      const FixedPoint& b = state[corners[1]].snapped;
+      const FixedPoint& c = state[corners[2]].snapped;
+      const int64_t area = orient2d(a, b, c);
+      if (!droppedBeforeDepths(a, b, c, area, out))
+        appendTriangleDepths(faceId, corners, area < 0, out);
+      continue;
+    }
+    appendFace(faceId, corners, n, out);
   }
 }
 
