@@ -195,6 +195,7 @@ FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance)
   double beyond[6];
   for (double& b : beyond) b = HUGE_VAL;
   double minW = HUGE_VAL, minNdcZ = HUGE_VAL;
+  double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;  // samples
   for (int c = 0; c < 8; ++c) {
     const Vec3 p((c & 1) ? boundsHi_[0] : boundsLo_[0], (c & 2) ? boundsHi_[1] : boundsLo_[1],
                  (c & 4) ? boundsHi_[2] : boundsLo_[2]);
@@ -205,6 +206,9 @@ FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance)
     }
     minW = std::min(minW, clip[3]);
     minNdcZ = std::min(minNdcZ, clip[2] / clip[3]);
+    const double x = (clip[0] / clip[3] + 1.0) * 0.5 * width_ * scale_;
+    const double y = (1.0 - clip[1] / clip[3]) * 0.5 * height_ * scale_;
+    x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
   }
   for (int i = 0; i < 6; ++i)
     if (beyond[i] > 1e-9 * (reach[i / 2] + reach[3])) view.outside = true;
@@ -219,6 +223,12 @@ FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance)
       float f = static_cast<float>(depth);
       if (double(f) > depth) f = nextFloatTowardZero(f);
       view.nearest = std::min(f, 1.0f);
+      // The box's projection (w > 0 at every corner), widened for rounding and snapping.
+      const double w = width_ * scale_ - 1.0, h = height_ * scale_ - 1.0;
+      view.area.minX = int(std::min(std::max(std::floor(x0) - 2.0, 0.0), w));
+      view.area.maxX = int(std::min(std::max(std::ceil(x1) + 2.0, 0.0), w));
+      view.area.minY = int(std::min(std::max(std::floor(y0) - 2.0, 0.0), h));
+      view.area.maxY = int(std::min(std::max(std::ceil(y1) + 2.0, 0.0), h));
     }
   }
   return view;
@@ -236,8 +246,9 @@ void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
     return;
   }
   instanceNearest_ = instanceView.nearest;
-  hiddenTiles_ =
-      filter_ && instanceNearest_ > 0.0f ? filter_->beginInstance(instanceNearest_) : HiddenTiles();
+  hiddenTiles_ = filter_ && instanceNearest_ > 0.0f
+                     ? filter_->beginInstance(instanceNearest_, instanceView.area)
+                     : HiddenTiles();
   const Mesh& mesh = *scene_.mesh;
   const size_t slots = slotPositions_.size();
   instanceState_.resize(slots);

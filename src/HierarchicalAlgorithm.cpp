@@ -53,10 +53,20 @@ class PyramidFilter : public TriangleFilter {
  public:
   PyramidFilter(const HzbRasterizer& rasterizer, RenderStats& stats)
       : rasterizer_(rasterizer), stats_(stats) {}
-  // The tiles where even the instance's nearest depth (with the smallest id) is behind.
-  HiddenTiles beginInstance(float nearestDepth) override {
+  // The tiles of the instance's area where even its nearest depth (with the smallest id) is
+  // behind; those of the previous instance's area are unmarked first, so that the work is
+  // that of the instance's size on screen.
+  HiddenTiles beginInstance(float nearestDepth, const SampleRect& area) override {
     const DepthPyramid& pyramid = rasterizer_.pyramid();
-    pyramid.tilesBehind(makeDepthKey(nearestDepth, 0), hiddenTiles_);
+    if (marked_.maxX >= marked_.minX)
+      pyramid.tilesBehind(0, marked_.minX, marked_.minY, marked_.maxX, marked_.maxY, hiddenTiles_);
+    marked_ = area;
+    if (area.maxX >= area.minX)
+      pyramid.tilesBehind(makeDepthKey(nearestDepth, 0), area.minX, area.minY, area.maxX, area.maxY,
+                          hiddenTiles_);
+    else
+      hiddenTiles_.resize(0);
+    if (hiddenTiles_.empty()) return HiddenTiles();
     return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, pyramid.tilesX()};
   }
   bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
@@ -67,6 +77,7 @@ class PyramidFilter : public TriangleFilter {
   const HzbRasterizer& rasterizer_;
   RenderStats& stats_;
   std::vector<uint8_t> hiddenTiles_;  // per pyramid tile, for the current instance
+  SampleRect marked_;                 // where hiddenTiles_ may hold nonzero bytes
 };
 
 }  // namespace

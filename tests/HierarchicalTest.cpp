@@ -518,15 +518,24 @@ TEST(FaceTransformerTest, InstanceNearestDepthBoundsEveryFaceTightly) {
       const uint32_t nf = uint32_t(scene.mesh->faceCount());
       FaceTransformer t(scene, camera, 1, false);
       for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-        const float nearest = t.viewOfInstance(k).nearest;
+        const FaceTransformer::InstanceView view = t.viewOfInstance(k);
+        const float nearest = view.nearest;
+        const SampleRect& area = view.area;
         FrameGeometry g;
         for (uint32_t face = 0; face < nf; ++face) t.transformFace(k * nf + face, g);
         if (g.counters.clippedAway > 0) {  // reaches past the near plane or a side
           zero += nearest == 0.0f;
           continue;
         }
-        for (const ScreenTriangle& tri : g.triangles)
+        for (const ScreenTriangle& tri : g.triangles) {
           ASSERT_LE(nearest, tri.plane.minDepth()) << "instance " << k;
+          // And every sample it covers lies in the area.
+          TriangleSetup b;
+          if (!b.bounds(tri.v, 96, 96)) continue;
+          EXPECT_TRUE(b.minX >= area.minX && b.maxX <= area.maxX && b.minY >= area.minY &&
+                      b.maxY <= area.maxY)
+              << "instance " << k;
+        }
         ASSERT_FALSE(g.triangles.empty());
         double boxNearest = HUGE_VAL;
         for (int c = 0; c < 8; ++c) {
@@ -572,7 +581,7 @@ class LeftHalfFilter : public TriangleFilter {
     for (int ty = 0; ty < 8; ++ty)
       for (int tx = 0; tx < 4; ++tx) marked[size_t(ty * 8 + tx)] = 1;
   }
-  HiddenTiles beginInstance(float nearestDepth) override {
+  HiddenTiles beginInstance(float nearestDepth, const SampleRect& /*area*/) override {
     bounds.push_back(nearestDepth);
     return HiddenTiles{marked.data(), 4, 8};
   }

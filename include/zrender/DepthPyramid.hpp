@@ -94,12 +94,18 @@ class DepthPyramid {
     return occludesSlow(x0, y0, x1, y1, key, maxNodes);
   }
 
-  // Sets hidden[t] (one byte per tile, row by row) to whether `key` is greater than every key
-  // of tile t: valid until the pyramid changes.
-  void tilesBehind(DepthKey key, std::vector<uint8_t>& hidden) const {
+  // For the tiles of the sample rectangle [minX, maxX] x [minY, maxY] (inside the image):
+  // sets hidden[t] (one byte per tile, row by row, sized for all tiles) to whether `key` is
+  // greater than every key of tile t, valid until the pyramid changes; or, with key 0, to 0.
+  void tilesBehind(DepthKey key, int minX, int minY, int maxX, int maxY,
+                   std::vector<uint8_t>& hidden) const {
     const std::vector<DepthKey>& tiles = levels_[0];
     hidden.resize(tiles.size());
-    for (size_t t = 0; t < tiles.size(); ++t) hidden[t] = key > tiles[t];
+    for (int ty = minY >> kTileShift; ty <= maxY >> kTileShift; ++ty) {
+      const size_t row = size_t(ty) * size_t(tilesX_);
+      for (int tx = minX >> kTileShift; tx <= maxX >> kTileShift; ++tx)
+        hidden[row + size_t(tx)] = key > tiles[row + size_t(tx)];
+    }
   }
   int tilesX() const { return tilesX_; }
 

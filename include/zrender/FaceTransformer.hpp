@@ -10,11 +10,11 @@
 
 namespace zrender {
 
-// Vertices to window coordinates, near/far clipping, snapping, back-face culling and window
-// space triangulation: the transform stage of SPEC §4–5, shared by every algorithm.
-// A test the transform asks about a triangle face before setting up its depth plane and
-// storing it, for algorithms that can prove it hidden from its corners alone (the z-pyramid):
-// such faces then cost no more than a back face.
+// A rectangle of samples, inclusive; empty when min > max.
+struct SampleRect {
+  int minX = 0, minY = 0, maxX = -1, maxY = -1;
+};
+
 // Screen tiles where every face of the instance being transformed is proved hidden.
 struct HiddenTiles {
   const uint8_t* marked = nullptr;  // per tile, row by row, nonzero when hidden; null: none
@@ -22,17 +22,23 @@ struct HiddenTiles {
   int tilesX = 0;                   // tiles per row
 };
 
+// A test the transform asks about a triangle face before setting up its depth plane and
+// storing it, for algorithms that can prove it hidden from its corners alone (the z-pyramid):
+// such faces then cost little more than a back face.
 class TriangleFilter {
  public:
   virtual ~TriangleFilter() = default;
   // Before the faces of an instance (transformInstance()), none of which has a sample nearer
-  // than window depth `nearestDepth` (> 0): the tiles where that bound is already hidden. A
-  // face whose sample bounds lie in at most 2 x 2 of them is then dropped before its depths
-  // are loaded (and counted in TransformCounters::filtered). Valid until the next call.
-  virtual HiddenTiles beginInstance(float /*nearestDepth*/) { return HiddenTiles(); }
-  // `v`: the snapped corners (samples, either winding); `nearestDepth`: a window depth no
-  // sample of the face is nearer than. It may be asked twice about a face: first with a bound
-  // for its whole instance, then with the least depth of its corners, exactly as the face's
+  // than window depth `nearestDepth` (> 0), and whose samples lie in `area` (as far as
+  // rounding allows: a hint of where to look, inside the image): the tiles where that bound
+  // is already hidden. A face whose sample bounds lie in at most 2 x 2 of them is then dropped
+  // before its depths are loaded (and counted in TransformCounters::filtered). Valid until
+  // the next call.
+  virtual HiddenTiles beginInstance(float /*nearestDepth*/, const SampleRect& /*area*/) {
+    return HiddenTiles();
+  }
+  // Then, for a triangle face still kept: `v`, its snapped corners (samples, either winding),
+  // and `nearestDepth`, the least window depth of its corners exactly as the face's
   // DepthPlane::minDepth() will be. True drops the face.
   virtual bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) = 0;
 };
@@ -41,6 +47,8 @@ class TriangleFilter {
 // above the least of `window[i][2]`, clamped to [0, 1].
 float nearestCornerDepth(const Vec3* window, uint32_t count);
 
+// Vertices to window coordinates, near/far clipping, snapping, back-face culling and window
+// space triangulation: the transform stage of SPEC §4–5, shared by every algorithm.
 class FaceTransformer {
  public:
   // sampleScale: 1, or 2 for MSAA 4 (the four samples of a pixel are a 2 x 2 grid of samples).
@@ -84,6 +92,7 @@ class FaceTransformer {
   struct InstanceView {
     bool outside = false;
     float nearest = 0.0f;
+    SampleRect area;  // with nearest > 0: the box's samples in the image, widened by 2
   };
   InstanceView viewOfInstance(uint32_t instance);
 
