@@ -166,6 +166,23 @@ inline bool FaceTransformer::droppedBeforeDepths(const FixedPoint& a, const Fixe
   return true;
 }
 
+// appendFace(), with its common case inline: a triangle whose corners all lie inside the view
+// volume's planes and the guard band (most faces) takes appendTriangle()'s path here.
+inline void FaceTransformer::appendFaceInline(uint32_t faceId, FaceCorners corners, uint32_t n,
+                                              FrameGeometry& out) {
+  const VertexState* state = view_.state;
+  if (n == 3 && (state[corners[0]].code | state[corners[1]].code | state[corners[2]].code) == 0) {
+    const FixedPoint& a = state[corners[0]].snapped;
+    const FixedPoint& b = state[corners[1]].snapped;
+    const FixedPoint& c = state[corners[2]].snapped;
+    const int64_t area = orient2d(a, b, c);
+    if (!droppedBeforeDepths(a, b, c, area, out))
+      appendTriangleDepths(faceId, corners, area < 0, out);
+    return;
+  }
+  appendFace(faceId, corners, n, out);
+}
+
 void FaceTransformer::transformAll(FrameGeometry& out) {
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) transformInstance(k, out);
 }
@@ -265,26 +282,12 @@ void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
     }
   }
   for (; v < slots; ++v) computeVertex(mvp, slotPositions_[v], v);
-  out.width = width_ * scale_;
-  out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t* faceStart = mesh.faceStart.data();
-  const VertexState* state = instanceState_.data();
   for (uint32_t f = 0; f < nf; ++f) {
-    const uint32_t first = faceStart[f], n = faceStart[f + 1] - first;
-    const FaceCorners corners{cornerSlots_.data() + first, 0};
-    // A triangle with every corner inside the view volume's planes and the guard band (most
-    // faces) goes straight to appendTriangle, where appendFace would send it after its checks.
-    if (n == 3 && (state[corners[0]].code | state[corners[1]].code | state[corners[2]].code) == 0) {
-      const FixedPoint& a = state[corners[0]].snapped;
-      const FixedPoint& b = state[corners[1]].snapped;
-      const FixedPoint& c = state[corners[2]].snapped;
-      const int64_t area = orient2d(a, b, c);
-      if (!droppedBeforeDepths(a, b, c, area, out))
-        appendTriangleDepths(instance * nf + f, corners, area < 0, out);
-      continue;
-    }
-    appendFace(instance * nf + f, corners, n, out);
+    const uint32_t first = faceStart[f];
+    appendFaceInline(instance * nf + f, FaceCorners{cornerSlots_.data() + first, 0},
+                     faceStart[f + 1] - first, out);
   }
 }
 
@@ -351,20 +354,8 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
     const uint32_t faceId = batchFaces_[i];
     // The stored count spares a division on the face's path (0: too many to store).
     const uint32_t n = batchFaceCorners_[i] ? batchFaceCorners_[i] : mesh.cornerCount(faceId % nf);
-    const FaceCorners corners{local, 0};
+    appendFaceInline(faceId, FaceCorners{local, 0}, n, out);
     local += n;
-    // As in transformInstance(): most faces are triangles wholly inside.
-    const VertexState* state = view_.state;
-    if (n == 3 && (state[corners[0]].code | state[corners[1]].code | state[corners[2]].code) == 0) {
-      const FixedPoint& a = state[corners[0]].snapped;
-      const FixedPoint& b = state[corners[1]].snapped;
-      const FixedPoint& c = state[corners[2]].snapped;
-      const int64_t area = orient2d(a, b, c);
-      if (!droppedBeforeDepths(a, b, c, area, out))
-        appendTriangleDepths(faceId, corners, area < 0, out);
-      continue;
-    }
-    appendFace(faceId, corners, n, out);
   }
 }
 

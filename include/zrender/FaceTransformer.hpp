@@ -140,6 +140,7 @@ class FaceTransformer {
     uint32_t operator[](uint32_t i) const { return base + slots[i]; }
   };
   void appendFace(uint32_t faceId, FaceCorners corners, uint32_t count, FrameGeometry& out);
+  void appendFaceInline(uint32_t faceId, FaceCorners corners, uint32_t count, FrameGeometry& out);
   void appendTriangle(uint32_t faceId, FaceCorners corners, FrameGeometry& out);
   // appendTriangle() in two steps: the checks that need only the snapped corners (degenerate,
   // back face, hidden tiles: counted, true when the face goes no further), then the rest.
