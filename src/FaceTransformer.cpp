@@ -150,14 +150,10 @@ inline bool FaceTransformer::droppedBeforeDepths(const FixedPoint& a, const Fixe
   // Where the instance's nearest depth is hidden, which needs no depth loaded: enough for a
   // face of an instance wholly behind what is drawn there.
   if (!hiddenTiles_.marked) return false;
-  const int minX = std::max(firstSampleAtOrAfter(std::min(std::min(a.x, b.x), c.x)), 0);
-  const int maxX = std::min(lastSampleAtOrBefore(std::max(std::max(a.x, b.x), c.x)), out.width - 1);
-  const int minY = std::max(firstSampleAtOrAfter(std::min(std::min(a.y, b.y), c.y)), 0);
-  const int maxY =
-      std::min(lastSampleAtOrBefore(std::max(std::max(a.y, b.y), c.y)), out.height - 1);
-  if (minX > maxX || minY > maxY) return false;
+  const SampleRect r = sampleBounds(a, b, c, out.width, out.height);
+  if (r.empty()) return false;
   const int shift = hiddenTiles_.tileShift;
-  const int x0 = minX >> shift, x1 = maxX >> shift, y0 = minY >> shift, y1 = maxY >> shift;
+  const int x0 = r.minX >> shift, x1 = r.maxX >> shift, y0 = r.minY >> shift, y1 = r.maxY >> shift;
   if (x1 - x0 > 1 || y1 - y0 > 1) return false;
   const uint8_t* r0 = hiddenTiles_.marked + size_t(y0) * size_t(hiddenTiles_.tilesX);
   const uint8_t* r1 = hiddenTiles_.marked + size_t(y1) * size_t(hiddenTiles_.tilesX);

@@ -10,11 +10,6 @@
 
 namespace zrender {
 
-// A rectangle of samples, inclusive; empty when min > max.
-struct SampleRect {
-  int minX = 0, minY = 0, maxX = -1, maxY = -1;
-};
-
 // Screen tiles where every face of the instance being transformed is proved hidden.
 struct HiddenTiles {
   const uint8_t* marked = nullptr;  // per tile, row by row, nonzero when hidden; null: none
