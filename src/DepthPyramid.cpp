@@ -48,18 +48,17 @@ ZRENDER_AVX2 inline unsigned equalMask(const DepthKey* p, __m256i wanted) {
 
 ZRENDER_AVX2 TileMax tileMaxAvx2(const DepthKey* first, size_t stride, int rows) {
   static_assert(DepthPyramid::kTileSize == 16, "four vectors of four keys per row");
-  const auto load = loadFlipped;
-  const auto max = maxFlipped;
   // The maximum over the tile, four independent column vectors at a time.
-  __m256i m0 = load(first), m1 = load(first + 4), m2 = load(first + 8), m3 = load(first + 12);
+  __m256i m0 = loadFlipped(first), m1 = loadFlipped(first + 4), m2 = loadFlipped(first + 8),
+          m3 = loadFlipped(first + 12);
   for (int y = 1; y < rows; ++y) {
     const DepthKey* row = first + size_t(y) * stride;
-    m0 = max(m0, load(row));
-    m1 = max(m1, load(row + 4));
-    m2 = max(m2, load(row + 8));
-    m3 = max(m3, load(row + 12));
+    m0 = maxFlipped(m0, loadFlipped(row));
+    m1 = maxFlipped(m1, loadFlipped(row + 4));
+    m2 = maxFlipped(m2, loadFlipped(row + 8));
+    m3 = maxFlipped(m3, loadFlipped(row + 12));
   }
-  const __m256i m = max(max(m0, m1), max(m2, m3));
+  const __m256i m = maxFlipped(maxFlipped(m0, m1), maxFlipped(m2, m3));
   alignas(32) int64_t lanes[4];
   _mm256_store_si256(reinterpret_cast<__m256i*>(lanes), m);
   const int64_t best = std::max(std::max(lanes[0], lanes[1]), std::max(lanes[2], lanes[3]));

@@ -183,10 +183,6 @@ void FaceTransformer::transformAll(FrameGeometry& out) {
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) transformInstance(k, out);
 }
 
-bool FaceTransformer::instanceOutsideView(uint32_t instance) {
-  return viewOfInstance(instance).outside;
-}
-
 FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance) {
   if (!prepared_) prepare();
   InstanceView view;
@@ -258,9 +254,8 @@ void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
     out.counters.degenerate += instanceDegenerate_;
     return;
   }
-  instanceNearest_ = instanceView.nearest;
-  hiddenTiles_ = filter_ && instanceNearest_ > 0.0f
-                     ? filter_->beginInstance(instanceNearest_, instanceView.area)
+  hiddenTiles_ = filter_ && instanceView.nearest > 0.0f
+                     ? filter_->beginInstance(instanceView.nearest, instanceView.area)
                      : HiddenTiles();
   const Mesh& mesh = *scene_.mesh;
   const size_t slots = slotPositions_.size();
@@ -296,7 +291,6 @@ void FaceTransformer::transformFace(uint32_t faceId, FrameGeometry& out) {
     vertexWindow_.resize(slots * scene_.instanceCount());
   }
   view_ = VertexView{state_.data(), vertexWindow_.data(), nullptr, nullptr, 0};
-  instanceNearest_ = 0.0f;
   hiddenTiles_ = HiddenTiles();
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t k = faceId / nf, f = faceId % nf;
@@ -321,7 +315,6 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
   }
   view_ = VertexView{batchState_.data(), batchWindow_.data(), batchVertexSlot_.data() + v0,
                      batchVertexInstance_.data() + v0, 0};
-  instanceNearest_ = 0.0f;
   hiddenTiles_ = HiddenTiles();
   const uint32_t* slot = view_.slot;
   const uint32_t* instance = view_.instance;

@@ -483,7 +483,7 @@ TEST(FaceTransformerTest, InstancesWhollyOutsideTheViewAreOnlyCounted) {
     FrameGeometry expected, actual;
     ASSERT_EQ(scene.instanceCount(), c.outside.size());
     for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-      EXPECT_EQ(byInstance.instanceOutsideView(k), bool(c.outside[k])) << "instance " << k;
+      EXPECT_EQ(byInstance.viewOfInstance(k).outside, bool(c.outside[k])) << "instance " << k;
       for (uint32_t face = 0; face < nf; ++face) byFace.transformFace(k * nf + face, expected);
       byInstance.transformInstance(k, actual);
     }

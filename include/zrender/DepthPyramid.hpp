@@ -9,6 +9,19 @@
 
 namespace zrender {
 
+// Where the largest key of a tile lies.
+struct TileMax {
+  DepthKey key = 0;
+  int row = 0, column = 0;  // within the tile
+};
+
+// The largest key of the `rows` x `columns` samples from `first` (rows `stride` keys apart),
+// in the last row holding it, at the last sample of that row holding it (for a tile with
+// samples still clear: the bottom-right-most, which triangles drawn top to bottom reach last).
+TileMax tileMax(const DepthKey* first, size_t stride, int rows, int columns);
+// The same for a whole tile (16 columns) with AVX2: same result, for CPUs that have it.
+TileMax tileMaxAvx2(const DepthKey* first, size_t stride, int rows);
+
 // The z-pyramid of Greene, Kass and Miller (1993) over a FrameBuffer: a max-quadtree of depth
 // keys. Level 0 holds one node per tile of kTileSize x kTileSize samples; each coarser level
 // halves both dimensions, up to one node. A node's value is never smaller than the largest key
@@ -33,19 +46,6 @@ namespace zrender {
 // The pyramid also clears the buffer lazily, a row of tiles at a time just before triangles
 // first reach it (prepareRows); finish() clears what no triangle reached. Logically every
 // sample is kClearKey from begin() on.
-// Where the largest key of a tile lies.
-struct TileMax {
-  DepthKey key = 0;
-  int row = 0, column = 0;  // within the tile
-};
-
-// The largest key of the `rows` x `columns` samples from `first` (rows `stride` keys apart),
-// in the last row holding it, at the last sample of that row holding it (for a tile with
-// samples still clear: the bottom-right-most, which triangles drawn top to bottom reach last).
-TileMax tileMax(const DepthKey* first, size_t stride, int rows, int columns);
-// The same for a whole tile (16 columns) with AVX2: same result, for CPUs that have it.
-TileMax tileMaxAvx2(const DepthKey* first, size_t stride, int rows);
-
 class DepthPyramid {
  public:
   static constexpr int kTileShift = 4;               // 16 x 16 samples

@@ -77,13 +77,10 @@ class FaceTransformer {
   // view volume, with margin, is only counted: every face of it would be clipped away.
   void transformInstance(uint32_t instance, FrameGeometry& out);
 
-  // Whether every vertex of the instance is, for certain, outside one and the same plane of
-  // the view volume (after beginFrame()).
-  bool instanceOutsideView(uint32_t instance);
-
-  // What the box of an instance's positions tells about all its vertices: whether they are all
-  // outside one plane of the view volume, and a window depth none of them is nearer than (0
-  // when the box reaches the eye plane).
+  // What the box of an instance's positions tells, for certain, about all its vertices in this
+  // frame (after beginFrame()): whether they are all outside one and the same plane of the view
+  // volume, and a window depth none of them is nearer than (0 when the box reaches the eye
+  // plane).
   struct InstanceView {
     bool outside = false;
     float nearest = 0.0f;
@@ -165,8 +162,7 @@ class FaceTransformer {
   Vec3 boundsLo_{0, 0, 0}, boundsHi_{0, 0, 0};  // model space: box of slotPositions_
   uint64_t instanceTriangles_ = 0;   // per instance: triangles of its faces of 3+ corners
   uint64_t instanceDegenerate_ = 0;  // per instance: its faces of fewer than 3 corners
-  float instanceNearest_ = 0.0f;     // the instance being transformed: viewOfInstance().nearest
-  HiddenTiles hiddenTiles_;          // and what the filter said of that bound
+  HiddenTiles hiddenTiles_;          // what the filter marked for the instance being transformed
   std::vector<VertexState> instanceState_;  // transformInstance(): per slot, for one instance
   std::vector<Vec3> instanceWindow_;
   uint32_t frame_ = 0;
