@@ -88,9 +88,10 @@ struct EdgeFunction {
     const int64_t dx = int64_t(b.x) - a.x, dy = int64_t(b.y) - a.y;
     stepX = -dy * kSubpixel;
     stepY = dx * kSubpixel;
-    const bool topLeft = dy < 0 || (dy == 0 && dx > 0);
-    value =
-        dx * (sampleCentre(originY) - a.y) - dy * (sampleCentre(originX) - a.x) - (topLeft ? 0 : 1);
+    // Not top-left: 1, as a value rather than a branch (triangle after triangle, an edge's
+    // direction follows no pattern a branch predictor could learn).
+    const int64_t notTopLeft = int64_t((dy > 0) | ((dy == 0) & (dx <= 0)));
+    value = dx * (sampleCentre(originY) - a.y) - dy * (sampleCentre(originX) - a.x) - notTopLeft;
   }
   bool covers(int64_t v) const { return v >= 0; }
 };
