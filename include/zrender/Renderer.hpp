@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -40,6 +41,11 @@ class Renderer {
   // The faces the last frame transformed and kept (algorithms that cull early keep fewer).
   const FrameGeometry& geometry() const { return geometry_; }
   const VisibilityAlgorithm& algorithm() const { return *algorithm_; }
+  // For measurements (CullingBound): frames draw only the transformed triangles for which
+  // `keep` is true (algorithms that transform all faces first only); empty: all of them.
+  void keepTriangles(std::function<bool(const ScreenTriangle&)> keep) {
+    keepTriangle_ = std::move(keep);
+  }
 
  private:
   const Scene& scene_;
@@ -52,6 +58,7 @@ class Renderer {
   FrameGeometry geometry_;
   cv::Mat color_;
   RenderStats stats_;
+  std::function<bool(const ScreenTriangle&)> keepTriangle_;
 };
 
 // Whether two frames agree bit for bit: keys (so depth and face ids) and colors. What

@@ -1,0 +1,62 @@
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "TestSupport.hpp"
+#include "zrender/CullingBound.hpp"
+
+namespace zrender {
+namespace {
+
+// Three squares facing the eye: A (face 0) in front, B (face 1) larger at the back, and C
+// (face 2) between them, small enough to be wholly behind A.
+Scene threeSquares() {
+  auto square = [](double half, double z, std::vector<Vec3>& p, std::vector<std::vector<int>>& f) {
+    const int first = int(p.size());
+    for (const auto& [x, y] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+      p.push_back(Vec3(x * half, y * half, z));
+    f.push_back({first, first + 1, first + 2, first + 3});
+  };
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  square(0.5, 0.5, p, f);
+  square(1.0, 0.0, p, f);
+  square(0.25, 0.25, p, f);
+  Warnings warnings;
+  return makeScene(test::tinySettings(32), test::makeMesh(p, f), warnings);
+}
+
+bool showsFace(const FrameBuffer& fb, uint32_t face) {
+  for (size_t i = 0; i < fb.size(); ++i)
+    if (keyFaceId(fb.data()[i]) == face) return true;
+  return false;
+}
+
+TEST(CullingBound, KeepsOnlyTheVisibleFacesAndTheSameBuffers) {
+  const Scene scene = threeSquares();
+  const CullingBound b = measureCullingBound(scene, makeCamera(scene), 3);
+  EXPECT_EQ(b.triangles, 6u);  // two per square
+  EXPECT_EQ(b.visibleFaces, 2u);
+  EXPECT_EQ(b.visibleTriangles, 4u);
+  EXPECT_TRUE(b.identical);
+  EXPECT_GT(b.rasterMs, 0.0);
+  EXPECT_GT(b.visibleRasterMs, 0.0);
+}
+
+TEST(CullingBound, KeptTrianglesAreAllThatIsDrawn) {
+  // Without the front square, the hidden one shows: the filter really drops triangles.
+  const Scene scene = threeSquares();
+  const Camera camera = makeCamera(scene);
+  Renderer renderer(scene, "zbuffer");
+  renderer.renderFrame(camera);
+  EXPECT_TRUE(showsFace(renderer.buffer(), 0));
+  EXPECT_FALSE(showsFace(renderer.buffer(), 2));
+  renderer.keepTriangles([](const ScreenTriangle& t) { return t.id != 0; });
+  renderer.renderFrame(camera);
+  EXPECT_FALSE(showsFace(renderer.buffer(), 0));
+  EXPECT_TRUE(showsFace(renderer.buffer(), 2));
+  EXPECT_EQ(renderer.geometry().triangles.size(), 4u);
+}
+
+}  // namespace
+}  // namespace zrender

@@ -1,0 +1,54 @@
+// zrender-culling-bound SCENE... [--repeat N] [--settings FILE]: how fast exact culling could
+// make each scene at best (CullingBound.hpp), as a Markdown table on stdout. A developer's
+// measurement, run by hand; not part of `zrender` or of CI.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "zrender/CommandLine.hpp"
+#include "zrender/CullingBound.hpp"
+#include "zrender/Error.hpp"
+#include "zrender/ObjLoader.hpp"
+
+int main(int argc, char** argv) {
+  using namespace zrender;
+  CLI::App app(
+      "The z-buffer given only the faces that end up visible: a lower bound for the "
+      "raster time of exact culling.");
+  std::vector<std::string> scenes;
+  int repeat = 9;
+  std::optional<std::filesystem::path> settings;
+  app.add_option("scene", scenes, "scenes of settings.json, or model files")->required();
+  app.add_option("--repeat", repeat, "frames of each kind, alternated (median)")
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--settings", settings, "settings file (default: ./settings.json)");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    std::cout << "| scene | size | triangles | visible faces (their triangles) | zbuffer frame ms "
+                 "| zbuffer raster ms | visible faces only, raster ms | raster bound "
+                 "| frame bound | identical |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    for (const std::string& name : scenes) {
+      Warnings warnings;
+      const SceneSettings s = resolveScene(name, settings, SceneOverrides(), warnings);
+      auto mesh = std::make_shared<const Mesh>(loadObj(s.modelPath, warnings));
+      const Scene scene = makeScene(s, mesh, warnings);
+      const CullingBound b = measureCullingBound(scene, makeCamera(scene), repeat);
+      char row[512];
+      std::snprintf(row, sizeof row,
+                    "| %s | %dx%d | %zu | %zu (%zu) | %.2f | %.2f | %.2f | %.3fx | %.3fx | %s |\n",
+                    name.c_str(), s.width, s.height, b.triangles, b.visibleFaces,
+                    b.visibleTriangles, b.frameMs, b.rasterMs, b.visibleRasterMs,
+                    b.visibleRasterMs / b.rasterMs, b.visibleRasterMs / b.frameMs,
+                    b.identical ? "yes" : "NO");
+      std::cout << row << std::flush;
+      if (!b.identical) return 1;
+    }
+  } catch (const InputError& e) {
+    std::cerr << "zrender-culling-bound: error: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}
