@@ -5,10 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <new>
 #include <set>
+#include <vector>
 
 #include "TestSupport.hpp"
 #include "zrender/Camera.hpp"
+#include "zrender/HugePageAllocator.hpp"
 #include "zrender/RasterRules.hpp"
 #include "zrender/Renderer.hpp"
 #include "zrender/Shader.hpp"
@@ -35,6 +39,40 @@ std::vector<std::vector<int>> picture(const std::vector<std::string>& rows) {
     for (char c : r) m.back().push_back(c == '.' ? -1 : c - '0');
   }
   return m;
+}
+
+TEST(FrameBuffer, BigBuffersStartOnAHugePageAndCopyLikeVectors) {
+  FrameBuffer big;
+  big.resize(1800, 1800);
+#if defined(__linux__)
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(big.data()) % HugePageAllocator<DepthKey>::kHugePage,
+            0u);
+#endif
+  big.clear();
+  big.row(1799)[1799] = makeDepthKey(0.5f, 7);
+  FrameBuffer copy = big;
+  EXPECT_TRUE(copy == big);
+  copy.row(0)[0] = makeDepthKey(0.25f, 3);
+  EXPECT_FALSE(copy == big);
+  EXPECT_EQ(big.row(1799)[1799], makeDepthKey(0.5f, 7));
+
+  FrameBuffer small;  // below a huge page: operator new
+  small.resize(8, 8);
+  small.clear();
+  FrameBuffer smallCopy = small;
+  EXPECT_TRUE(smallCopy == small);
+}
+
+TEST(FrameBuffer, HugePageVectorsKeepTheirValuesAcrossBothKindsOfBlock) {
+  // Grows from operator new blocks into mapped ones; every value must move along.
+  std::vector<uint64_t, HugePageAllocator<uint64_t>> v;
+  for (uint64_t i = 0; i < 600000; ++i) v.push_back(i * 2654435761u);
+  for (uint64_t i = 0; i < v.size(); ++i) ASSERT_EQ(v[i], i * 2654435761u);
+  v.resize(10);
+  v.shrink_to_fit();  // back to a small block
+  EXPECT_EQ(v[9], uint64_t(9) * 2654435761u);
+  HugePageAllocator<uint64_t> allocator;
+  EXPECT_THROW(allocator.allocate(std::size_t(-1) / 8), std::bad_alloc);
 }
 
 TEST(TinyScene, SquareQuadCoversExactlyItsSixteenPixels) {

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "zrender/HugePageAllocator.hpp"
 #include "zrender/RasterRules.hpp"
 
 namespace zrender {
@@ -38,7 +39,7 @@ class FrameBuffer {
 
  private:
   int width_ = 0, height_ = 0;
-  std::vector<DepthKey> keys_;
+  std::vector<DepthKey, HugePageAllocator<DepthKey>> keys_;
 };
 
 }  // namespace zrender
