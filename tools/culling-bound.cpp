@@ -4,9 +4,12 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "zrender/CommandLine.hpp"
 #include "zrender/CullingBound.hpp"
@@ -25,17 +28,31 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", repeat, "frames of each kind, alternated (median)")
       ->check(CLI::Range(1, 1000));
   app.add_option("--settings", settings, "settings file (default: ./settings.json)");
-  CLI11_PARSE(app, argc, argv);
   try {
-    std::cout << "| scene | size | triangles | visible faces (their triangles) | zbuffer frame ms "
-                 "| zbuffer raster ms | visible faces only, raster ms | raster bound "
-                 "| frame bound | identical |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return 2;  // bad input, as for zrender
+  }
+  try {
+    bool header = false;
     for (const std::string& name : scenes) {
       Warnings warnings;
       const SceneSettings s = resolveScene(name, settings, SceneOverrides(), warnings);
       auto mesh = std::make_shared<const Mesh>(loadObj(s.modelPath, warnings));
       const Scene scene = makeScene(s, mesh, warnings);
+      for (const std::string& w : warnings)
+        std::cerr << "zrender-culling-bound: warning: " << w << "\n";
       const CullingBound b = measureCullingBound(scene, makeCamera(scene), repeat);
+      if (!header) {
+        std::cout << "| scene | size | triangles | visible faces (their triangles) "
+                     "| zbuffer frame ms | zbuffer raster ms | visible faces only, raster ms "
+                     "| raster bound | frame bound | identical |\n"
+                     "|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+        header = true;
+      }
       char row[512];
       std::snprintf(row, sizeof row,
                     "| %s | %dx%d | %zu | %zu (%zu) | %.2f | %.2f | %.2f | %.3fx | %.3fx | %s |\n",
