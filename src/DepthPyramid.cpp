@@ -28,8 +28,6 @@ TileMax tileMax(const DepthKey* first, size_t stride, int rows, int columns) {
 
 namespace {
 
-#define ZRENDER_AVX2 __attribute__((target("avx2")))
-
 // Keys with the top bit flipped: unsigned 64-bit order becomes the signed order AVX2 compares.
 ZRENDER_AVX2 inline __m256i loadFlipped(const DepthKey* p) {
   return _mm256_xor_si256(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(p)),

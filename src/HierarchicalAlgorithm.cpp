@@ -83,12 +83,7 @@ class PyramidFilter : public TriangleFilter {
 }  // namespace
 
 void HierarchicalAlgorithm::prepare(const Scene& scene) {
-  const std::vector<Vec3>& positions = scene.mesh->positions;
-  if (positions.empty()) return;
-  Vec3 lo = positions[0], hi = positions[0];
-  for (const Vec3& p : positions)
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-  meshCentre_ = (lo + hi) * 0.5;
+  meshCentre_ = boundingBox(scene.mesh->positions).centre();
 }
 
 void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {

@@ -40,18 +40,16 @@ Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
   // Bounding sphere: centre of the bounding box of all instances, radius to the farthest
   // vertex. Instances only translate, so the extreme instances are the corners of the grid.
   const Mat4 rot = rotation(settings.angle, settings.axis);
-  Vec3 lo(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
   std::vector<Vec3> rotated;
   rotated.reserve(scene.mesh->positions.size());
   for (const Vec3& p : scene.mesh->positions) rotated.push_back(transformPoint(rot, p));
-  for (const Vec3& p : rotated)
-    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  const Box3 box = boundingBox(rotated);
   Vec3 offLo = scene.instanceOffsets.front(), offHi = scene.instanceOffsets.back();
   for (int a = 0; a < 3; ++a) {
     if (offLo[a] > offHi[a]) std::swap(offLo[a], offHi[a]);
   }
   if (!rotated.empty()) {
-    scene.boundsCentre = ((lo + offLo) + (hi + offHi)) * 0.5;
+    scene.boundsCentre = ((box.lo + offLo) + (box.hi + offHi)) * 0.5;
     double r2 = 0.0;
     for (int corner = 0; corner < 8; ++corner) {
       const Vec3 off((corner & 1) ? offHi[0] : offLo[0], (corner & 2) ? offHi[1] : offLo[1],

@@ -47,4 +47,14 @@ FitView fitView(double radius, double fovyDegrees, double aspect) {
   return FitView{distance, std::max(distance - r, distance * 1e-3), distance + r};
 }
 
+Box3 boundingBox(const std::vector<Vec3>& points) {
+  Box3 box;
+  if (points.empty()) return box;
+  box.lo = box.hi = points[0];
+  for (const Vec3& p : points)
+    for (int a = 0; a < 3; ++a)
+      box.lo[a] = std::min(box.lo[a], p[a]), box.hi[a] = std::max(box.hi[a], p[a]);
+  return box;
+}
+
 }  // namespace zrender

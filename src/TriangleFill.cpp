@@ -44,8 +44,6 @@ void fillTriangleScalar(const TriangleSetup& s, const DepthPlane& plane, uint32_
   }
 }
 
-#define ZRENDER_AVX2 __attribute__((target("avx2")))
-
 namespace {
 
 // What fillTriangleAvx2 keeps fixed over a triangle, broadcast to the four lanes, and its

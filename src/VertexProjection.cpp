@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "zrender/CpuFeatures.hpp"
+
 namespace zrender {
 
 void projectVertex(const Mat4& mvp, const Vec3& position, const VertexViewport& viewport,
@@ -34,11 +36,9 @@ void projectVertex(const Mat4& mvp, const Vec3& position, const VertexViewport& 
 // + m z, + m w with w = 1), no FMA (not enabled for this function, contraction off),
 // clipToWindow's 1 / w then products, and the snap's rounding to nearest (even) under the same
 // rounding mode as lrint; the guard band keeps the snapped values within int32.
-__attribute__((target("avx2"))) void projectVertices4Avx2(const Mat4& mvp,
-                                                          const Vec3* const positions[4],
-                                                          const VertexViewport& viewport,
-                                                          uint32_t frame, VertexState* states,
-                                                          Vec3* windows) {
+ZRENDER_AVX2 void projectVertices4Avx2(const Mat4& mvp, const Vec3* const positions[4],
+                                       const VertexViewport& viewport, uint32_t frame,
+                                       VertexState* states, Vec3* windows) {
   const __m256d x = _mm256_setr_pd(positions[0]->val[0], positions[1]->val[0], positions[2]->val[0],
                                    positions[3]->val[0]);
   const __m256d y = _mm256_setr_pd(positions[0]->val[1], positions[1]->val[1], positions[2]->val[1],

@@ -375,6 +375,14 @@ Scene floorGridScene(SceneSettings& s) {
   return makeScene(s, test::makeMesh(p, f), warnings);
 }
 
+// The camera of floorGridScene()'s settings `s`, seen from `eye`.
+Camera floorGridCamera(const SceneSettings& s, const Scene& scene, const Vec3& eye) {
+  SceneSettings view = s;
+  view.eye = eye;
+  Warnings warnings;
+  return makeCamera(makeScene(view, scene.mesh, warnings));
+}
+
 TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
   // Quads and a concave polygon, on a floor that crosses the near plane and leaves the image,
   // in a grid of 3 x 1 x 2 instances; faces in a shuffled order cut into batches of random
@@ -383,7 +391,6 @@ TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
   // transformed on its own with the whole model's vertices.
   SceneSettings s;
   const Scene scene = floorGridScene(s);
-  Warnings warnings;
 
   std::mt19937 rng(7);
   std::vector<uint32_t> order(scene.faceCount());
@@ -398,9 +405,7 @@ TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
     byFace.prepare(&order);
     byBatch.prepare(&order, &batches);
     for (const Vec3& eye : {Vec3(0.3, 0.2, 1.0), Vec3(-0.5, -0.3, 2.5)}) {
-      SceneSettings view = s;
-      view.eye = eye;
-      const Camera camera = makeCamera(makeScene(view, scene.mesh, warnings));
+      const Camera camera = floorGridCamera(s, scene, eye);
       byFace.beginFrame(camera);
       byBatch.beginFrame(camera);
       FrameGeometry expected, actual;
@@ -424,13 +429,10 @@ TEST(FaceTransformerTest, InstancesGiveWhatFaceByFaceGives) {
   const Scene scene = floorGridScene(s);
   const uint32_t nf = uint32_t(scene.mesh->faceCount());
   const std::vector<uint32_t> instances = {3, 0, 5, 1, 4, 2};
-  Warnings warnings;
   for (bool cull : {true, false}) {
     FaceTransformer byFace(scene, 1, cull), byInstance(scene, 1, cull);
     for (const Vec3& eye : {Vec3(0.3, 0.2, 1.0), Vec3(-0.5, -0.3, 2.5)}) {
-      SceneSettings view = s;
-      view.eye = eye;
-      const Camera camera = makeCamera(makeScene(view, scene.mesh, warnings));
+      const Camera camera = floorGridCamera(s, scene, eye);
       byFace.beginFrame(camera);
       byInstance.beginFrame(camera);
       FrameGeometry expected, actual;

@@ -159,10 +159,10 @@ class FaceTransformer {
   std::vector<uint32_t> cornerSlots_;  // per mesh corner: its position's slot
   std::vector<VertexState> state_;     // per vertex
   std::vector<Vec3> vertexWindow_;     // per vertex: pixels and depth (read by faces that survive)
-  Vec3 boundsLo_{0, 0, 0}, boundsHi_{0, 0, 0};  // model space: box of slotPositions_
-  uint64_t instanceTriangles_ = 0;   // per instance: triangles of its faces of 3+ corners
-  uint64_t instanceDegenerate_ = 0;  // per instance: its faces of fewer than 3 corners
-  HiddenTiles hiddenTiles_;          // what the filter marked for the instance being transformed
+  Box3 bounds_;                        // model space: box of slotPositions_
+  uint64_t instanceTriangles_ = 0;     // per instance: triangles of its faces of 3+ corners
+  uint64_t instanceDegenerate_ = 0;    // per instance: its faces of fewer than 3 corners
+  HiddenTiles hiddenTiles_;            // what the filter marked for the instance being transformed
   std::vector<VertexState> instanceState_;  // transformInstance(): per slot, for one instance
   std::vector<Vec3> instanceWindow_;
   uint32_t frame_ = 0;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <opencv2/core.hpp>
 
 namespace zrender {
@@ -34,6 +36,14 @@ inline Vec3 clipToWindow(const Vec4& clip, int width, int height) {
   const double xNdc = clip[0] * invW, yNdc = clip[1] * invW, zNdc = clip[2] * invW;
   return Vec3((xNdc + 1.0) * 0.5 * width, (1.0 - yNdc) * 0.5 * height, (zNdc + 1.0) * 0.5);
 }
+
+// An axis-aligned box, in the points' own space.
+struct Box3 {
+  Vec3 lo{0, 0, 0}, hi{0, 0, 0};
+  Vec3 centre() const { return (lo + hi) * 0.5; }
+};
+// The box of `points`; all zero when there are none.
+Box3 boundingBox(const std::vector<Vec3>& points);
 
 inline Vec3 transformPoint(const Mat4& m, const Vec3& p) {
   const Vec4 r = m * Vec4(p[0], p[1], p[2], 1.0);
