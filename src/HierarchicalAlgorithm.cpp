@@ -61,13 +61,14 @@ class PyramidFilter : public TriangleFilter {
     if (marked_.maxX >= marked_.minX)
       pyramid.tilesBehind(0, marked_.minX, marked_.minY, marked_.maxX, marked_.maxY, hiddenTiles_);
     marked_ = area;
+    bool all = false;
     if (area.maxX >= area.minX)
-      pyramid.tilesBehind(makeDepthKey(nearestDepth, 0), area.minX, area.minY, area.maxX, area.maxY,
-                          hiddenTiles_);
+      all = pyramid.tilesBehind(makeDepthKey(nearestDepth, 0), area.minX, area.minY, area.maxX,
+                                area.maxY, hiddenTiles_);
     else
       hiddenTiles_.resize(0);
     if (hiddenTiles_.empty()) return HiddenTiles();
-    return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, pyramid.tilesX()};
+    return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, pyramid.tilesX(), all};
   }
   bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
     return rasterizer_.rejects(v, nearestDepth, faceId, stats_);
@@ -132,6 +133,7 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
   }
   rasterizer_.finish();
   stats.trianglesHzbCulled += g.counters.filtered;
+  stats.extra.emplace_back("instances_hzb_culled", g.counters.instancesFiltered);
 }
 
 }  // namespace zrender
