@@ -202,7 +202,7 @@ FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance)
   // Plane i: 2a + s beyond it, for coordinate a = i / 2 against w, on side s = i % 2.
   double beyond[6];
   for (double& b : beyond) b = HUGE_VAL;
-  double minW = HUGE_VAL, minNdcZ = HUGE_VAL, farthest = -HUGE_VAL;
+  double minW = HUGE_VAL, minNdcZ = HUGE_VAL;
   double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;  // samples
   for (int c = 0; c < 8; ++c) {
     const Vec3 p((c & 1) ? bounds_.hi[0] : bounds_.lo[0], (c & 2) ? bounds_.hi[1] : bounds_.lo[1],
@@ -213,7 +213,6 @@ FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance)
       beyond[2 * a + 1] = std::min(beyond[2 * a + 1], clip[a] - clip[3]);  // a > w
     }
     minW = std::min(minW, clip[3]);
-    farthest = std::max(farthest, clip[2] - clip[3]);  // > 0 beyond the far plane
     minNdcZ = std::min(minNdcZ, clip[2] / clip[3]);
     const double x = (clip[0] / clip[3] + 1.0) * 0.5 * width_ * scale_;
     const double y = (1.0 - clip[1] / clip[3]) * 0.5 * height_ * scale_;
@@ -238,11 +237,6 @@ FaceTransformer::InstanceView FaceTransformer::viewOfInstance(uint32_t instance)
       view.area.maxX = int(std::min(std::max(std::ceil(x1) + 2.0, 0.0), w));
       view.area.minY = int(std::min(std::max(std::floor(y0) - 2.0, 0.0), h));
       view.area.maxY = int(std::min(std::max(std::ceil(y1) + 2.0, 0.0), h));
-      // Inside far and within half the guard band: the corners' rounding is far below either
-      // margin, and so is every vertex's (the box's projection holds theirs, w > 0).
-      const double band = 0.5 * kGuardBand;
-      view.unclipped = farthest < -1e-9 * (reach[2] + reach[3]) && x0 > -band && x1 < band &&
-                       y0 > -band && y1 < band;
     }
   }
   return view;
@@ -262,16 +256,6 @@ void FaceTransformer::transformInstance(uint32_t instance, FrameGeometry& out) {
   hiddenTiles_ = filter_ && instanceView.nearest > 0.0f
                      ? filter_->beginInstance(instanceView.nearest, instanceView.area)
                      : HiddenTiles();
-  if (hiddenTiles_.all && instanceView.unclipped) {
-    // No face is clipped, so every sample a face covers lies in the area and none is nearer
-    // than the instance's nearest depth, which every tile there already hides: no face can
-    // change the buffer (polygons included, which the tiles are not asked about one by one).
-    // Counted as the hidden tiles count faces; those of fewer than 3 corners as degenerate.
-    out.counters.filtered += instanceTriangles_;
-    out.counters.degenerate += instanceDegenerate_;
-    out.counters.instancesFiltered += 1;
-    return;
-  }
   const Mesh& mesh = *scene_.mesh;
   const size_t slots = slotPositions_.size();
   instanceState_.resize(slots);

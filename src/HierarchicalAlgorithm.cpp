@@ -61,14 +61,13 @@ class PyramidFilter : public TriangleFilter {
     if (marked_.maxX >= marked_.minX)
       pyramid.tilesBehind(0, marked_.minX, marked_.minY, marked_.maxX, marked_.maxY, hiddenTiles_);
     marked_ = area;
-    bool all = false;
     if (area.maxX >= area.minX)
-      all = pyramid.tilesBehind(makeDepthKey(nearestDepth, 0), area.minX, area.minY, area.maxX,
-                                area.maxY, hiddenTiles_);
+      pyramid.tilesBehind(makeDepthKey(nearestDepth, 0), area.minX, area.minY, area.maxX, area.maxY,
+                          hiddenTiles_);
     else
       hiddenTiles_.resize(0);
     if (hiddenTiles_.empty()) return HiddenTiles();
-    return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, pyramid.tilesX(), all};
+    return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, pyramid.tilesX()};
   }
   bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
     return rasterizer_.rejects(v, nearestDepth, faceId, stats_);
@@ -133,7 +132,6 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
   }
   rasterizer_.finish();
   stats.trianglesHzbCulled += g.counters.filtered;
-  stats.extra.emplace_back("instances_hzb_culled", g.counters.instancesFiltered);
 }
 
 }  // namespace zrender

@@ -97,21 +97,15 @@ class DepthPyramid {
   // For the tiles of the sample rectangle [minX, maxX] x [minY, maxY] (inside the image):
   // sets hidden[t] (one byte per tile, row by row, sized for all tiles) to whether `key` is
   // greater than every key of tile t, valid until the pyramid changes; or, with key 0, to 0.
-  // True when it set all of them.
-  bool tilesBehind(DepthKey key, int minX, int minY, int maxX, int maxY,
+  void tilesBehind(DepthKey key, int minX, int minY, int maxX, int maxY,
                    std::vector<uint8_t>& hidden) const {
     const std::vector<DepthKey>& tiles = levels_[0];
     hidden.resize(tiles.size());
-    uint8_t all = 1;
     for (int ty = minY >> kTileShift; ty <= maxY >> kTileShift; ++ty) {
       const size_t row = size_t(ty) * size_t(tilesX_);
-      for (int tx = minX >> kTileShift; tx <= maxX >> kTileShift; ++tx) {
-        const uint8_t behind = key > tiles[row + size_t(tx)];
-        hidden[row + size_t(tx)] = behind;
-        all &= behind;
-      }
+      for (int tx = minX >> kTileShift; tx <= maxX >> kTileShift; ++tx)
+        hidden[row + size_t(tx)] = key > tiles[row + size_t(tx)];
     }
-    return all;
   }
   int tilesX() const { return tilesX_; }
 

@@ -15,7 +15,6 @@ struct HiddenTiles {
   const uint8_t* marked = nullptr;  // per tile, row by row, nonzero when hidden; null: none
   int tileShift = 0;                // tiles of 2^tileShift x 2^tileShift samples
   int tilesX = 0;                   // tiles per row
-  bool all = false;                 // every tile of the instance's area is marked
 };
 
 // A test the transform asks about a triangle face before setting up its depth plane and
@@ -28,9 +27,8 @@ class TriangleFilter {
   // than window depth `nearestDepth` (> 0), and whose samples lie in `area` (as far as
   // rounding allows: a hint of where to look, inside the image): the tiles where that bound
   // is already hidden. A face whose sample bounds lie in at most 2 x 2 of them is then dropped
-  // before its depths are loaded (and counted in TransformCounters::filtered); when all the
-  // area's tiles are, and no face of the instance is clipped, so is the whole instance. Valid
-  // until the next call.
+  // before its depths are loaded (and counted in TransformCounters::filtered). Valid until
+  // the next call.
   virtual HiddenTiles beginInstance(float /*nearestDepth*/, const SampleRect& /*area*/) {
     return HiddenTiles();
   }
@@ -76,8 +74,7 @@ class FaceTransformer {
   // into arrays reused from instance to instance: they stay in cache while its faces read them
   // (for a grid, the whole model's would not).
   // An instance whose box (of the positions faces use) lies wholly beyond one plane of the
-  // view volume, with margin, is only counted: every face of it would be clipped away. So is
-  // one that the filter finds hidden all over its area, if its box needs no clipping.
+  // view volume, with margin, is only counted: every face of it would be clipped away.
   void transformInstance(uint32_t instance, FrameGeometry& out);
 
   // What the box of an instance's positions tells, for certain, about all its vertices in this
@@ -88,9 +85,6 @@ class FaceTransformer {
     bool outside = false;
     float nearest = 0.0f;
     SampleRect area;  // with nearest > 0: the box's samples in the image, widened by 2
-    // With nearest > 0: every vertex is inside the far plane and well inside the guard band
-    // (with margin), so no face is clipped, and every sample a face covers lies in `area`.
-    bool unclipped = false;
   };
   InstanceView viewOfInstance(uint32_t instance);
 

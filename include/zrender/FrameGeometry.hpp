@@ -31,11 +31,10 @@ struct ScreenTriangle {
 
 // Per-frame counters of the transform stage (SPEC §7 names in comments).
 struct TransformCounters {
-  uint64_t backfaceCulled = 0;     // triangles_backface_culled (faces, counted in triangles)
-  uint64_t clippedAway = 0;        // triangles_clipped_away: outside near/far or the view
-  uint64_t degenerate = 0;         // zero area after snapping, fewer than 3 corners, non-simple
-  uint64_t filtered = 0;           // dropped by a TriangleFilter's hidden tiles (HiddenTiles)
-  uint64_t instancesFiltered = 0;  // instances dropped whole, their triangles in `filtered`
+  uint64_t backfaceCulled = 0;  // triangles_backface_culled (faces, counted in triangles)
+  uint64_t clippedAway = 0;     // triangles_clipped_away: outside near/far or the view
+  uint64_t degenerate = 0;      // zero area after snapping, fewer than 3 corners, non-simple
+  uint64_t filtered = 0;        // dropped by a TriangleFilter's hidden tiles (HiddenTiles)
 };
 
 struct FrameGeometry {
