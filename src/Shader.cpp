@@ -141,6 +141,18 @@ uint32_t Shader::normalColor(const Mat4& modelView, uint32_t local) const {
 
 uint32_t Shader::faceColor(uint32_t faceId) {
   // Colors of the id alone: a few operations, cheaper than a look-up in a table of every face.
+  if (mode_ == ShadingMode::Id || mode_ == ShadingMode::Random) return uncachedFaceColor(faceId);
+  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
+  // Normal colors of instances that share their rotation are those of the mesh face: one
+  // entry per mesh face, which stays in cache where one per face of a big grid does not.
+  FaceCache& entry = cache_[mode_ == ShadingMode::Normal && sharedRotation_ ? faceId % nf : faceId];
+  if (entry.stamp == frame_) return entry.data;
+  entry.stamp = frame_;
+  entry.data = uncachedFaceColor(faceId);
+  return entry.data;
+}
+
+uint32_t Shader::uncachedFaceColor(uint32_t faceId) const {
   if (mode_ == ShadingMode::Id) {
     const uint32_t v = faceId + 1;  // R = low byte, G = middle, B = high (SPEC §6)
     return ((v & 0xFF) << 16) | (((v >> 8) & 0xFF) << 8) | ((v >> 16) & 0xFF);
@@ -148,10 +160,6 @@ uint32_t Shader::faceColor(uint32_t faceId) {
   if (mode_ == ShadingMode::Random) return randomFaceColor(faceId);
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   const uint32_t instance = faceId / nf, local = faceId % nf;
-  // Normal colors of instances that share their rotation are those of the mesh face: one
-  // entry per mesh face, which stays in cache where one per face of a big grid does not.
-  FaceCache& entry = cache_[mode_ == ShadingMode::Normal && sharedRotation_ ? local : faceId];
-  if (entry.stamp == frame_) return entry.data;
   uint32_t color = 0;
   switch (mode_) {
     case ShadingMode::Normal:
@@ -174,8 +182,6 @@ uint32_t Shader::faceColor(uint32_t faceId) {
     default:
       break;
   }
-  entry.stamp = frame_;
-  entry.data = color;
   return color;
 }
 
@@ -364,9 +370,21 @@ void Shader::prepareTable() {
     }
   }
   if (tableState_ != TableState::On || !geometry_) return;
+  // Each face of the frame comes once: no per-face cache to ask. The octree's faces come in
+  // its leaf order, unrelated to their ids, so the normals and table entries they need are
+  // fetched a few faces ahead (bunny, octree raster 9.30 -> 8.44 ms in alternated runs, from
+  // cache misses here; 32 ahead measured a little better than 8 and 16).
+  constexpr size_t kAhead = 32;
   const std::vector<ScreenFace>& faces = geometry_->faces;
-  for (; tableFaces_ < faces.size(); ++tableFaces_)
-    colorTable_[size_t(faces[tableFaces_].id) + 1] = faceColor(faces[tableFaces_].id);
+  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
+  for (; tableFaces_ < faces.size(); ++tableFaces_) {
+    if (tableFaces_ + kAhead < faces.size()) {
+      const uint32_t ahead = faces[tableFaces_ + kAhead].id;
+      __builtin_prefetch(&faceNormals_[ahead % nf]);
+      __builtin_prefetch(&colorTable_[size_t(ahead) + 1], 1);
+    }
+    colorTable_[size_t(faces[tableFaces_].id) + 1] = uncachedFaceColor(faces[tableFaces_].id);
+  }
 }
 
 void Shader::rowsFinal(int sampleRows) {

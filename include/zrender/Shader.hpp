@@ -48,7 +48,8 @@ class Shader {
     cv::Vec3f base;  // material diffuse color, RGB 0..1
   };
 
-  uint32_t faceColor(uint32_t faceId);
+  uint32_t faceColor(uint32_t faceId);  // through cache_, for faces met pixel by pixel
+  uint32_t uncachedFaceColor(uint32_t faceId) const;
   uint32_t normalColor(const Mat4& modelView, uint32_t local) const;  // packed, mesh face
   uint32_t sampleColor(DepthKey key, int x, int y);                   // 0x00RRGGBB; x, y in samples
   void shadePixelRows(int endRow);  // rows [shadedRows_, endRow) of the image
