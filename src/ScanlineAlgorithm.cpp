@@ -42,18 +42,19 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
       ActiveEdge* list = activeEdges_.data() + p.edgeBegin;
       const uint32_t n = activeCount_[pi];
       const double rowBase = p.plane.rowBase(y);
+      // The span [left, right) of the row, already clipped to the image; nothing when empty.
+      auto fillSpan = [&](int left, int right) {
+        if (left >= right) return;
+        ++spans;
+        tested += uint64_t(right - left);
+        written += fill(row, left, right, p.plane, rowBase, p.id);
+      };
       if (n == 2) {
         // Two active edges (every triangle, and most rows of other polygons): the span lies
         // between them in either order, so there is nothing to sort. Branch-free, because
         // which edge is on the left depends on the face's winding.
         const int c0 = list[0].step.column, c1 = list[1].step.column;
-        const int left = std::max(std::min(c0, c1), 0);
-        const int right = std::min(std::max(c0, c1), width);
-        if (left < right) {
-          ++spans;
-          tested += uint64_t(right - left);
-          written += fill(row, left, right, p.plane, rowBase, p.id);
-        }
+        fillSpan(std::max(std::min(c0, c1), 0), std::min(std::max(c0, c1), width));
       } else {
         // Insertion sort by column: the order changes little from row to row.
         for (uint32_t k = 1; k < n; ++k) {
@@ -63,14 +64,8 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
           list[j] = e;
         }
         // Even-odd spans [q1, q2), [q3, q4), ... clipped to the image.
-        for (uint32_t k = 0; k + 1 < n; k += 2) {
-          const int left = std::max(list[k].step.column, 0);
-          const int right = std::min(list[k + 1].step.column, width);
-          if (left >= right) continue;
-          ++spans;
-          tested += uint64_t(right - left);
-          written += fill(row, left, right, p.plane, rowBase, p.id);
-        }
+        for (uint32_t k = 0; k + 1 < n; k += 2)
+          fillSpan(std::max(list[k].step.column, 0), std::min(list[k + 1].step.column, width));
       }
       // Edges ending on this row leave; the others step to the next row.
       uint32_t m = 0;
