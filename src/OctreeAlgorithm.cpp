@@ -121,6 +121,11 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
       continue;
     }
     if (node.childMask == 0) {
+      if (skipLeaf_ &&
+          skipLeaf_(octree_.faces().data() + node.faceBegin, node.faceEnd - node.faceBegin)) {
+        ++stats.octreeNodesCulled;
+        continue;
+      }
       const double t0 = nowMilliseconds();
       const size_t firstTriangle = g.triangles.size();
       input.transformer.transformBatch(leafBatch_[nodeIndex], g);

@@ -4,6 +4,8 @@
 
 #include "TestSupport.hpp"
 #include "zrender/CullingBound.hpp"
+#include "zrender/OctreeAlgorithm.hpp"
+#include "zrender/Renderer.hpp"
 
 namespace zrender {
 namespace {
@@ -41,6 +43,50 @@ TEST(CullingBound, KeepsOnlyTheVisibleFacesAndTheSameBuffers) {
   EXPECT_TRUE(b.identical);
   EXPECT_GT(b.rasterMs, 0.0);
   EXPECT_GT(b.visibleRasterMs, 0.0);
+  // Three faces make one octree leaf, which shows two of them.
+  EXPECT_EQ(b.octreeLeavesDrawn, 1u);
+  EXPECT_EQ(b.visibleLeaves, 1u);
+  EXPECT_TRUE(b.leafBoundIdentical);
+  EXPECT_GT(b.octreeFrameMs, 0.0);
+  EXPECT_GT(b.leafBoundFrameMs, 0.0);
+}
+
+TEST(CullingBound, OnTheBunnyPerfectLeafCullingDrawsFewerLeavesAndTheSameBuffers) {
+  auto mesh = test::referenceModel("bunny");
+  if (!mesh) GTEST_SKIP() << "bunny not linked under models/";
+  SceneSettings settings = test::projectScene("bunny");
+  settings.width = settings.height = 160;
+  Warnings warnings;
+  const Scene scene = makeScene(settings, mesh, warnings);
+  const CullingBound b = measureCullingBound(scene, makeCamera(scene), 1);
+  EXPECT_TRUE(b.identical);
+  EXPECT_TRUE(b.leafBoundIdentical);
+  // The bunny's back half is leaves of back faces and hidden faces.
+  EXPECT_GT(b.visibleLeaves, 100u);
+  EXPECT_LT(b.visibleLeaves, b.octreeLeavesDrawn);
+}
+
+TEST(CullingBound, SkippedLeavesAreNotDrawn) {
+  // The octree's measurement hook really passes leaves over: skipping every leaf leaves the
+  // background, counted as culled nodes.
+  const Scene scene = threeSquares();
+  const Camera camera = makeCamera(scene);
+  Renderer renderer(scene, "octree");
+  renderer.renderFrame(camera);
+  EXPECT_TRUE(showsFace(renderer.buffer(), 0));
+  EXPECT_EQ(renderer.stats().octreeNodesCulled, 0u);
+  uint32_t asked = 0;
+  dynamic_cast<OctreeAlgorithm&>(renderer.algorithm())
+      .skipLeaves([&asked](const uint32_t*, uint32_t count) {
+        asked += count;
+        return true;
+      });
+  renderer.renderFrame(camera);
+  EXPECT_EQ(asked, 3u);  // every face, once
+  EXPECT_FALSE(showsFace(renderer.buffer(), 0));
+  EXPECT_FALSE(showsFace(renderer.buffer(), 1));
+  EXPECT_EQ(renderer.stats().octreeNodesCulled, 1u);
+  EXPECT_TRUE(renderer.geometry().triangles.empty());
 }
 
 TEST(CullingBound, KeptTrianglesAreAllThatIsDrawn) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "zrender/HierarchicalAlgorithm.hpp"
@@ -45,12 +46,18 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
 
   const Octree& octree() const { return octree_; }
 
+  // For measurements (CullingBound): a leaf for which `skip` is true, given its global face
+  // ids, is passed over as if the pyramid had hidden it (and counted as culled). Empty: none.
+  using LeafSkip = std::function<bool(const uint32_t* faceIds, uint32_t count)>;
+  void skipLeaves(LeafSkip skip) { skipLeaf_ = std::move(skip); }
+
  private:
   Octree octree_;
   HzbRasterizer rasterizer_;
   std::vector<uint32_t> stack_;      // nodes still to visit, nearest on top
   std::vector<uint32_t> batches_;    // leaf boundaries in octree_.faces(), in order
   std::vector<uint32_t> leafBatch_;  // per node: its batch, for leaves
+  LeafSkip skipLeaf_;
 };
 
 }  // namespace zrender

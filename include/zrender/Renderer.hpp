@@ -41,6 +41,7 @@ class Renderer {
   // The faces the last frame transformed and kept (algorithms that cull early keep fewer).
   const FrameGeometry& geometry() const { return geometry_; }
   const VisibilityAlgorithm& algorithm() const { return *algorithm_; }
+  VisibilityAlgorithm& algorithm() { return *algorithm_; }
   // For measurements (CullingBound): frames draw only the transformed triangles for which
   // `keep` is true (algorithms that transform all faces first only); empty: all of them.
   void keepTriangles(std::function<bool(const ScreenTriangle&)> keep) {
