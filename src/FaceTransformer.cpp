@@ -347,6 +347,29 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
   }
 }
 
+namespace {
+
+// Prefetches the cache lines of `count` elements from `first`.
+template <typename T>
+void prefetchRange(const T* first, size_t count) {
+  const char* p = reinterpret_cast<const char*>(first);
+  const char* end = reinterpret_cast<const char*>(first + count);
+  for (; p < end; p += 64) __builtin_prefetch(p);
+}
+
+}  // namespace
+
+void FaceTransformer::prefetchBatch(uint32_t batch) const {
+  const uint32_t f0 = batchFaceStart_[batch], f1 = batchFaceStart_[batch + 1];
+  const uint32_t v0 = batchVertexStart_[batch], v1 = batchVertexStart_[batch + 1];
+  const uint32_t c0 = batchCornerStart_[batch], c1 = batchCornerStart_[batch + 1];
+  prefetchRange(batchFaces_.data() + f0, f1 - f0);
+  prefetchRange(batchFaceCorners_.data() + f0, f1 - f0);
+  prefetchRange(batchVertexSlot_.data() + v0, v1 - v0);
+  prefetchRange(batchVertexInstance_.data() + v0, v1 - v0);
+  prefetchRange(batchCorners_.data() + c0, c1 - c0);
+}
+
 float nearestCornerDepth(const Vec3* window, uint32_t count) {
   double lo = window[0][2];
   for (uint32_t i = 1; i < count; ++i) lo = std::min(lo, window[i][2]);

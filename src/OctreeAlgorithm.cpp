@@ -130,6 +130,9 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
       const size_t firstTriangle = g.triangles.size();
       input.transformer.transformBatch(leafBatch_[nodeIndex], g);
       stats.lazyTransformMs += nowMilliseconds() - t0;
+      // The next node is likely the next leaf: fetch its faces while this one draws.
+      if (!stack_.empty() && nodes[stack_.back()].childMask == 0)
+        input.transformer.prefetchBatch(leafBatch_[stack_.back()]);
       // The leaf's screen region was usually not drawn recently: fetch the buffer rows of a
       // triangle a few places ahead while drawing.
       const size_t end = g.triangles.size();

@@ -100,6 +100,10 @@ class FaceTransformer {
   // For algorithms that draw a model in spatially compact groups (the octree's leaves).
   void transformBatch(uint32_t batch, FrameGeometry& out);
 
+  // Asks the cache for the per-batch data transformBatch(batch) will read: a batch's arrays
+  // lie at an unrelated place in memory from the previous one's.
+  void prefetchBatch(uint32_t batch) const;
+
   // Asked about every triangle face inside near/far and the guard band (most faces) from now
   // on; null for none. The filter must outlive its use.
   void setFilter(TriangleFilter* filter) { filter_ = filter; }
