@@ -1,5 +1,6 @@
 #include "zrender/CullingBound.hpp"
 
+#include <memory>
 #include <vector>
 
 #include "zrender/OctreeAlgorithm.hpp"
@@ -8,12 +9,13 @@
 
 namespace zrender {
 
-CullingBound measureCullingBound(const Scene& scene, const Camera& camera, int repeat) {
+CullingBound measureCullingBound(const Scene& scene, const Camera& camera, int repeat,
+                                 uint32_t leafFaces) {
   CullingBound bound;
   Renderer all(scene, "zbuffer");
   Renderer visibleOnly(scene, "zbuffer");
-  Renderer octree(scene, "octree");
-  Renderer leafBound(scene, "octree");
+  Renderer octree(scene, std::make_unique<OctreeAlgorithm>(leafFaces));
+  Renderer leafBound(scene, std::make_unique<OctreeAlgorithm>(leafFaces));
   all.renderFrame(camera);
   bound.triangles = all.geometry().triangles.size();
 

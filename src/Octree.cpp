@@ -40,8 +40,9 @@ void radixSortByCode(std::vector<uint64_t>& keys, int bits) {
 
 class Builder {
  public:
-  Builder(const Scene& scene, std::vector<OctreeNode>& nodes, std::vector<uint32_t>& faces)
-      : mesh_(*scene.mesh), nodes_(nodes), faces_(faces) {
+  Builder(const Scene& scene, uint32_t leafFaces, std::vector<OctreeNode>& nodes,
+          std::vector<uint32_t>& faces)
+      : mesh_(*scene.mesh), leafFaces_(std::max(leafFaces, 1u)), nodes_(nodes), faces_(faces) {
     // Instances differ by a translation only (Scene::modelMatrix: the rotation, then the grid
     // offset), so the rotated positions are shared: world = rotated + offset, equal to the
     // transformer's model matrix product up to rounding, which the box margin covers.
@@ -108,7 +109,7 @@ class Builder {
     std::vector<uint64_t>().swap(keys);
 
     nodes_.clear();
-    nodes_.reserve(size_t(total) / Octree::kLeafFaces * 2 + 16);
+    nodes_.reserve(size_t(total) / leafFaces_ * 2 + 16);
     nodes_.emplace_back();
     buildNode(0, 0, 0, total, 0, 0, 0);
     for (OctreeNode& node : nodes_) {
@@ -133,7 +134,7 @@ class Builder {
       const uint32_t cell[3] = {cx, cy, cz};
       for (int a = 0; a < 3; ++a) node.split[a] = float(origin_[a] + (cell[a] + 0.5) * cellSide);
     }
-    if (end - begin <= Octree::kLeafFaces || depth == Octree::kMaxDepth) {
+    if (end - begin <= leafFaces_ || depth == Octree::kMaxDepth) {
       leafBounds(index);
       return;
     }
@@ -203,6 +204,7 @@ class Builder {
   }
 
   const Mesh& mesh_;
+  uint32_t leafFaces_;  // a node with at most this many faces is a leaf
   std::vector<OctreeNode>& nodes_;
   std::vector<uint32_t>& faces_;
   std::vector<Vec3> rotated_;  // mesh positions after the model rotation
@@ -216,10 +218,10 @@ class Builder {
 
 }  // namespace
 
-void Octree::build(const Scene& scene) {
+void Octree::build(const Scene& scene, uint32_t leafFaces) {
   nodes_.clear();
   faces_.clear();
-  Builder(scene, nodes_, faces_).build();
+  Builder(scene, leafFaces, nodes_, faces_).build();
   nodes_.shrink_to_fit();
 }
 

@@ -80,7 +80,7 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
 }
 
 void OctreeAlgorithm::prepare(const Scene& scene) {
-  octree_.build(scene);
+  octree_.build(scene, leafFaces_);
   // The leaves' face ranges follow one another in octree_.faces() (the tree is built in
   // Morton order), so they are the batches in that order.
   const std::vector<OctreeNode>& nodes = octree_.nodes();

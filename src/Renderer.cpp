@@ -27,8 +27,11 @@ double peakRssMb() {
 }
 
 Renderer::Renderer(const Scene& scene, const std::string& algorithm)
+    : Renderer(scene, makeAlgorithm(algorithm)) {}
+
+Renderer::Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm)
     : scene_(scene),
-      algorithm_(makeAlgorithm(algorithm)),
+      algorithm_(std::move(algorithm)),
       shader_(scene, scene.settings.shading),
       sampleScale_(scene.settings.msaa == 4 ? 2 : 1),
       transformer_(scene, sampleScale_, scene.settings.cull) {

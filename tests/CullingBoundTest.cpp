@@ -51,6 +51,16 @@ TEST(CullingBound, KeepsOnlyTheVisibleFacesAndTheSameBuffers) {
   EXPECT_GT(b.leafBoundFrameMs, 0.0);
 }
 
+TEST(CullingBound, OctreesOfTheLeafSizeAsked) {
+  // Leaves of one face: A and B each fill a leaf that shows, C's shows nothing.
+  const Scene scene = threeSquares();
+  const CullingBound b = measureCullingBound(scene, makeCamera(scene), 1, 1);
+  EXPECT_EQ(b.visibleFaces, 2u);
+  EXPECT_EQ(b.visibleLeaves, 2u);
+  EXPECT_GE(b.octreeLeavesDrawn, 2u);
+  EXPECT_TRUE(b.leafBoundIdentical);
+}
+
 TEST(CullingBound, OnTheBunnyPerfectLeafCullingDrawsFewerLeavesAndTheSameBuffers) {
   auto mesh = test::referenceModel("bunny");
   if (!mesh) GTEST_SKIP() << "bunny not linked under models/";

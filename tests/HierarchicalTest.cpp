@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <random>
 #include <set>
 #include <string>
@@ -750,6 +751,25 @@ TEST(OctreeTest, EveryFaceOnceAndInsideItsNodes) {
   EXPECT_GT(leaves, 8u);
 }
 
+TEST(OctreeTest, LeafSizeBoundsEveryLeaf) {
+  // Leaves hold at most the faces asked for; smaller leaves make more of them. 700 random
+  // faces have distinct centroids, far from kMaxDepth's cells, so the bound is never waived.
+  Warnings warnings;
+  const Scene scene = makeScene(test::tinySettings(64), test::randomSoup(12, 700, false), warnings);
+  auto leafSizes = [&scene](uint32_t leafFaces) {
+    Octree tree;
+    tree.build(scene, leafFaces);
+    std::vector<uint32_t> sizes;
+    for (const OctreeNode& node : tree.nodes())
+      if (node.childMask == 0) sizes.push_back(node.faceEnd - node.faceBegin);
+    return sizes;
+  };
+  const std::vector<uint32_t> small = leafSizes(8), big = leafSizes(Octree::kLeafFaces);
+  EXPECT_LE(*std::max_element(small.begin(), small.end()), 8u);
+  EXPECT_GT(*std::max_element(big.begin(), big.end()), 8u);
+  EXPECT_GT(small.size(), 4 * big.size());
+}
+
 TEST(OctreeTest, HiddenNodesHoldNoVisibleFace) {
   // A wall (faces 0, 1) with clusters of small triangles just in front of and just behind it,
   // and more far behind. Against a pyramid of the wall alone, every node the test calls
@@ -864,6 +884,23 @@ TEST(HierarchicalExactTest, RandomSoupsWithCoplanarDuplicates) {
     const Compared c =
         expectSameAsZBuffer(test::randomSoup(seed, 400, true), s, "soup " + std::to_string(seed));
     EXPECT_GT(c.covered, 1000u);
+  }
+}
+
+TEST(HierarchicalExactTest, OctreeOfAnyLeafSize) {
+  // The leaf size only moves where node tests happen; small leaves test far more nodes.
+  for (uint32_t leafFaces : {1u, 4u, 32u}) {
+    SceneSettings s = test::tinySettings(96);
+    s.cull = false;
+    Warnings warnings;
+    const Scene scene = makeScene(s, test::randomSoup(6, 400, true), warnings);
+    Renderer ref(scene, "zbuffer");
+    Renderer octree(scene, std::make_unique<OctreeAlgorithm>(leafFaces));
+    ref.renderFrame(makeCamera(scene));
+    octree.renderFrame(makeCamera(scene));
+    EXPECT_TRUE(identicalFrames(ref.buffer(), ref.color(), octree.buffer(), octree.color()))
+        << "leaves of " << leafFaces;
+    EXPECT_GT(test::coveredSamples(ref.buffer()), 1000u);
   }
 }
 

@@ -1,7 +1,7 @@
-// zrender-culling-bound SCENE... [--repeat N] [--settings FILE]: how fast exact culling could
-// make each scene at best (CullingBound.hpp), as two Markdown tables on stdout: the z-buffer
-// given only the visible faces, and the octree given only the leaves that hold one. A developer's
-// measurement, run by hand; not part of `zrender` or of CI.
+// zrender-culling-bound SCENE... [--repeat N] [--leaf-faces N] [--settings FILE]: how fast exact
+// culling could make each scene at best (CullingBound.hpp), as two Markdown tables on stdout: the
+// z-buffer given only the visible faces, and the octree given only the leaves that hold one. A
+// developer's measurement, run by hand; not part of `zrender` or of CI.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -24,10 +24,13 @@ int main(int argc, char** argv) {
       "raster time of exact culling.");
   std::vector<std::string> scenes;
   int repeat = 9;
+  uint32_t leafFaces = Octree::kLeafFaces;
   std::optional<std::filesystem::path> settings;
   app.add_option("scene", scenes, "scenes of settings.json, or model files")->required();
   app.add_option("--repeat", repeat, "frames of each kind, alternated (median)")
       ->check(CLI::Range(1, 1000));
+  app.add_option("--leaf-faces", leafFaces, "octree leaf size, faces (zrender: 128)")
+      ->check(CLI::Range(1, 1 << 20));
   app.add_option("--settings", settings, "settings file (default: ./settings.json)");
   try {
     app.parse(argc, argv);
@@ -51,8 +54,8 @@ int main(int argc, char** argv) {
       const Scene scene = makeScene(s, mesh, warnings);
       for (const std::string& w : warnings)
         std::cerr << "zrender-culling-bound: warning: " << w << "\n";
-      rows.push_back(
-          Row{name, s.width, s.height, measureCullingBound(scene, makeCamera(scene), repeat)});
+      rows.push_back(Row{name, s.width, s.height,
+                         measureCullingBound(scene, makeCamera(scene), repeat, leafFaces)});
     }
     char line[512];
     std::cout << "| scene | size | triangles | visible faces (their triangles) "
@@ -69,6 +72,7 @@ int main(int argc, char** argv) {
                     b.identical ? "yes" : "NO");
       std::cout << line;
     }
+    std::cout << "\nOctree leaves of at most " << leafFaces << " faces.\n";
     std::cout << "\n| scene | octree leaves drawn | leaves with a visible face | octree frame ms "
                  "| only those leaves: transform ms | raster ms | frame ms | octree / zbuffer "
                  "frame | leaf bound / zbuffer frame | identical |\n"

@@ -3,6 +3,7 @@
 #include <cstddef>
 
 #include "zrender/Camera.hpp"
+#include "zrender/Octree.hpp"
 #include "zrender/Scene.hpp"
 
 namespace zrender {
@@ -35,6 +36,8 @@ struct CullingBound {
 };
 
 // Renders `repeat` frames of each kind, alternated (so that all see the same machine state).
-CullingBound measureCullingBound(const Scene& scene, const Camera& camera, int repeat);
+// The two octrees are built with leaves of at most `leafFaces` faces.
+CullingBound measureCullingBound(const Scene& scene, const Camera& camera, int repeat,
+                                 uint32_t leafFaces = Octree::kLeafFaces);
 
 }  // namespace zrender

@@ -41,10 +41,11 @@ struct OctreeNode {
 class Octree {
  public:
   static constexpr int kMaxDepth = 10;         // 2^10 cells per axis: 30-bit Morton codes
-  static constexpr uint32_t kLeafFaces = 128;  // a node with at most this many faces is a leaf
+  static constexpr uint32_t kLeafFaces = 128;  // default: at most this many faces make a leaf
 
-  // Builds the octree over scene.faceCount() faces (id = instance * mesh faces + face).
-  void build(const Scene& scene);
+  // Builds the octree over scene.faceCount() faces (id = instance * mesh faces + face); a node
+  // with at most `leafFaces` faces (or at kMaxDepth) is a leaf.
+  void build(const Scene& scene, uint32_t leafFaces = kLeafFaces);
 
   const std::vector<OctreeNode>& nodes() const { return nodes_; }  // nodes_[0] is the root
   const std::vector<uint32_t>& faces() const { return faces_; }    // face ids in Morton order

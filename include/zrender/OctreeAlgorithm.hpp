@@ -36,6 +36,8 @@ class OctreeNodeTest {
 // go through the pyramid test of HzbRasterizer.
 class OctreeAlgorithm : public VisibilityAlgorithm {
  public:
+  // `leafFaces`: the octree's leaf size (Octree::build); other sizes are for measurements.
+  explicit OctreeAlgorithm(uint32_t leafFaces = Octree::kLeafFaces) : leafFaces_(leafFaces) {}
   std::string name() const override { return "octree"; }
   void prepare(const Scene& scene) override;
   bool transformsAll() const override { return false; }
@@ -52,6 +54,7 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
   void skipLeaves(LeafSkip skip) { skipLeaf_ = std::move(skip); }
 
  private:
+  uint32_t leafFaces_;
   Octree octree_;
   HzbRasterizer rasterizer_;
   std::vector<uint32_t> stack_;      // nodes still to visit, nearest on top

@@ -29,6 +29,8 @@ struct FrameTimings {
 class Renderer {
  public:
   Renderer(const Scene& scene, const std::string& algorithm);
+  // With an algorithm object built by the caller (measurements: an octree of another leaf size).
+  Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm);
 
   // Renders one frame; the results stay valid until the next call.
   FrameTimings renderFrame(const Camera& camera);
