@@ -37,11 +37,17 @@ struct OctreeNode {
 // medians of 5 runs alternated in one series, then node tests and faces transformed per frame.
 // At most 16 faces per leaf: 68.0 ms (119K, 381K); 32: 56.3 (46K, 410K); 64: 55.1 (39K, 419K);
 // 128: 51.3 (16K, 475K). A second series: 128: 49.8; 256: 50.4 (13K, 492K); 512: 51.2. Bigger
-// leaves cull a little less but cost fewer node tests, and their batches share fewer vertices.
+// leaves cull a little less but cost fewer node tests, and fewer vertices are computed twice
+// (once per leaf that uses them).
+// Measured again on 2026-11-23, after the per-leaf work got cheaper (medians of 9 alternated
+// runs, --repeat 9, twice): 256 against 128 took bunny's raster 9.29 -> 8.99 and
+// 9.48 -> 8.92 ms, crowd's frame 37.85 -> 37.58 and 38.06 -> 37.94 ms (192: no better than
+// 128 on the bunny; 512: crowd 38.82 ms). `zrender-culling-bound --leaf-faces N` measures
+// what perfect node tests would give at each size.
 class Octree {
  public:
   static constexpr int kMaxDepth = 10;         // 2^10 cells per axis: 30-bit Morton codes
-  static constexpr uint32_t kLeafFaces = 128;  // default: at most this many faces make a leaf
+  static constexpr uint32_t kLeafFaces = 256;  // default: at most this many faces make a leaf
 
   // Builds the octree over scene.faceCount() faces (id = instance * mesh faces + face); a node
   // with at most `leafFaces` faces (or at kMaxDepth) is a leaf.
