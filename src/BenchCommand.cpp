@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include <opencv2/core.hpp>
@@ -127,7 +128,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
     warnings.clear();
   };
-  // The z-buffer is the reference every algorithm is compared with, so it always runs first.
+  // The z-buffer is the reference every algorithm is compared with, so it always comes first.
   std::vector<std::string> algorithms = {"zbuffer"};
   for (const auto& a : options.algorithms.empty() ? algorithmNames() : options.algorithms) {
     makeAlgorithm(a);  // an unknown name fails before any work
@@ -157,43 +158,45 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     const Scene scene = makeScene(settings, mesh, warnings);
     flushWarnings();
     const Camera camera = makeCamera(scene);
-    FrameBuffer reference;
-    cv::Mat referenceColor;
-    double referenceRaster = 0, referenceFrame = 0;
-    for (const std::string& algorithm : algorithms) {
-      Renderer renderer(scene, algorithm);
-      std::vector<double> transform, raster, frame;
-      for (int i = 0; i < options.repeat; ++i) {
-        if (tty)
-          err << "\rbench: " << sceneName << " " << algorithm << " frame " << (i + 1) << "/"
-              << options.repeat << "   " << std::flush;
-        const FrameTimings t = renderer.renderFrame(camera);
-        transform.push_back(t.transformMs);
-        raster.push_back(t.rasterMs);
-        frame.push_back(t.frameMs());
+    // Every algorithm is prepared first, then the frames go round the algorithms, so that a
+    // burst of load on the machine falls on all of them alike rather than on one algorithm's
+    // frames, and the ratios of one run stay comparable.
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    for (const std::string& algorithm : algorithms)
+      renderers.push_back(std::make_unique<Renderer>(scene, algorithm));
+    const size_t n = algorithms.size();
+    std::vector<std::vector<double>> transform(n), raster(n), frame(n);
+    for (int i = 0; i < options.repeat; ++i) {
+      if (tty)
+        err << "\rbench: " << sceneName << " round " << (i + 1) << "/" << options.repeat << "   "
+            << std::flush;
+      for (size_t k = 0; k < n; ++k) {
+        const FrameTimings t = renderers[k]->renderFrame(camera);
+        transform[k].push_back(t.transformMs);
+        raster[k].push_back(t.rasterMs);
+        frame[k].push_back(t.frameMs());
       }
+    }
+    const Renderer& reference = *renderers[0];  // zbuffer
+    const double referenceRaster = median(raster[0]), referenceFrame = median(frame[0]);
+    for (size_t k = 0; k < n; ++k) {
+      const Renderer& renderer = *renderers[k];
       BenchRow row;
       row.scene = sceneName;
-      row.algorithm = algorithm;
+      row.algorithm = algorithms[k];
       row.width = settings.width;
       row.height = settings.height;
       row.msaa = settings.msaa;
       row.faces = scene.faceCount();
       row.prepareMs = renderer.prepareMs();
-      row.transformMs = median(transform);
-      row.rasterMs = median(raster);
-      row.rasterMinMs = *std::min_element(raster.begin(), raster.end());
-      row.frameMs = median(frame);
+      row.transformMs = median(transform[k]);
+      row.rasterMs = median(raster[k]);
+      row.rasterMinMs = *std::min_element(raster[k].begin(), raster[k].end());
+      row.frameMs = median(frame[k]);
       row.stats = renderer.stats();
-      if (algorithm == "zbuffer") {
-        reference = renderer.buffer();
-        referenceColor = renderer.color().clone();
-        referenceRaster = row.rasterMs;
-        referenceFrame = row.frameMs;
-      } else {
-        row.identical =
-            identicalFrames(renderer.buffer(), renderer.color(), reference, referenceColor);
-      }
+      if (k > 0)
+        row.identical = identicalFrames(renderer.buffer(), renderer.color(), reference.buffer(),
+                                        reference.color());
       row.rasterSpeedup = row.rasterMs > 0 ? referenceRaster / row.rasterMs : 0;
       row.frameSpeedup = row.frameMs > 0 ? referenceFrame / row.frameMs : 0;
       disagreements += !row.identical;
