@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   app.add_option("scene", scenes, "scenes of settings.json, or model files")->required();
   app.add_option("--repeat", repeat, "frames of each kind, alternated (median)")
       ->check(CLI::Range(1, 1000));
-  app.add_option("--leaf-faces", leafFaces, "octree leaf size, faces (zrender: 128)")
+  app.add_option("--leaf-faces", leafFaces,
+                 "octree leaf size, faces (zrender: " + std::to_string(Octree::kLeafFaces) + ")")
       ->check(CLI::Range(1, 1 << 20));
   app.add_option("--settings", settings, "settings file (default: ./settings.json)");
   try {
