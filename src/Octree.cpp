@@ -57,15 +57,9 @@ class Builder {
     const uint32_t total = facesPerInstance_ * uint32_t(offsets_.size());
     if (total == 0) return;
 
-    // Scene bounds, for the Morton grid.
-    Vec3 lo(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL);
-    Vec3 rlo = lo, rhi = hi, olo = lo, ohi = hi;
-    for (const Vec3& p : rotated_)
-      for (int a = 0; a < 3; ++a) rlo[a] = std::min(rlo[a], p[a]), rhi[a] = std::max(rhi[a], p[a]);
-    for (const Vec3& o : offsets_)
-      for (int a = 0; a < 3; ++a) olo[a] = std::min(olo[a], o[a]), ohi[a] = std::max(ohi[a], o[a]);
-    lo = rlo + olo;
-    hi = rhi + ohi;
+    // Scene bounds, for the Morton grid: every instance is the rotated mesh plus its offset.
+    const Box3 mesh = boundingBox(rotated_), offsets = boundingBox(offsets_);
+    const Vec3 lo = mesh.lo + offsets.lo, hi = mesh.hi + offsets.hi;
     double side = 0.0, magnitude = 0.0;
     for (int a = 0; a < 3; ++a) {
       side = std::max(side, hi[a] - lo[a]);
