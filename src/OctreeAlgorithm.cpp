@@ -142,6 +142,9 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
         if (t + kAhead < end) rasterizer_.prefetch(g.triangles[t + kAhead]);
         rasterizer_.drawTriangle(g.triangles[t], stats);
       }
+      // Drawn: the next leaf's triangles reuse the same, cached, storage instead of
+      // appending to megabytes of them (crowd, octree frame 37.8 -> 37.2 ms, alternated runs).
+      g.triangles.resize(firstTriangle);
       continue;
     }
     // Front to back: the octant on the eye's side of all three split planes first, then
