@@ -144,11 +144,13 @@ inline bool FaceTransformer::droppedBeforeDepths(const FixedPoint& a, const Fixe
     counters.backfaceCulled += 1;
     return true;
   }
+  // A face that covers no sample centre (far away, a seventh of crowd's front faces) would
+  // be set up and stored to draw nothing, by every algorithm.
+  const SampleRect r = sampleBounds(a, b, c, out.width, out.height);
+  if (r.empty()) return true;
   // Where the instance's nearest depth is hidden, which needs no depth loaded: enough for a
   // face of an instance wholly behind what is drawn there.
   if (!hiddenTiles_.marked) return false;
-  const SampleRect r = sampleBounds(a, b, c, out.width, out.height);
-  if (r.empty()) return false;
   const int shift = hiddenTiles_.tileShift;
   const int x0 = r.minX >> shift, x1 = r.maxX >> shift, y0 = r.minY >> shift, y1 = r.maxY >> shift;
   if (x1 - x0 > 1 || y1 - y0 > 1) return false;

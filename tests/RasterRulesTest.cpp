@@ -84,6 +84,36 @@ TEST(FillRule, SampleRangeOfAnIntervalIsTheCentresInIt) {
   }
 }
 
+TEST(FillRule, SampleBoundsAreTheSetUpsBounds) {
+  // The transform drops a triangle whose sampleBounds() are empty, before its plane: exact
+  // only because the pixel loops' own TriangleSetup::bounds() would find no sample either.
+  std::mt19937 rng(11);
+  const int width = 37, height = 23;
+  std::uniform_int_distribution<int32_t> corner(-3 * kSubpixel, (width + 3) * kSubpixel);
+  std::uniform_int_distribution<int32_t> offset(-2 * kSubpixel, 2 * kSubpixel);
+  int empty = 0, nonEmpty = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // Mostly tiny triangles (a sample or two across), some big ones.
+    const FixedPoint a{corner(rng), corner(rng) * height / width};
+    const int scale = i % 10 == 0 ? 8 : 1;
+    const FixedPoint b{a.x + offset(rng) * scale, a.y + offset(rng) * scale};
+    const FixedPoint c{a.x + offset(rng) * scale, a.y + offset(rng) * scale};
+    const FixedPoint v[3] = {a, b, c};
+    TriangleSetup setup;
+    const bool found = setup.bounds(v, width, height);
+    const SampleRect r = sampleBounds(a, b, c, width, height);
+    ASSERT_EQ(r.empty(), !found) << i;
+    if (found) {
+      EXPECT_TRUE(r.minX == setup.minX && r.maxX == setup.maxX && r.minY == setup.minY &&
+                  r.maxY == setup.maxY)
+          << i;
+    }
+    (found ? nonEmpty : empty) += 1;
+  }
+  EXPECT_GT(empty, 2000);
+  EXPECT_GT(nonEmpty, 2000);
+}
+
 TEST(FillRule, TwoTrianglesSharingAnEdgeCoverTheirUnionExactlyOnce) {
   std::mt19937 rng(1234);
   int checked = 0;
