@@ -43,7 +43,9 @@ class TriangleFilter {
 float nearestCornerDepth(const Vec3* window, uint32_t count);
 
 // Vertices to window coordinates, near/far clipping, snapping, back-face culling and window
-// space triangulation: the transform stage of SPEC §4–5, shared by every algorithm.
+// space triangulation: the transform stage of SPEC §4–5, shared by every algorithm. A triangle
+// face that needs no clipping and covers no sample centre is left out (it could not change any
+// buffer).
 class FaceTransformer {
  public:
   // sampleScale: 1, or 2 for MSAA 4 (the four samples of a pixel are a 2 x 2 grid of samples).
@@ -104,8 +106,8 @@ class FaceTransformer {
   // lie at an unrelated place in memory from the previous one's.
   void prefetchBatch(uint32_t batch) const;
 
-  // Asked about every triangle face inside near/far and the guard band (most faces) from now
-  // on; null for none. The filter must outlive its use.
+  // Asked about every triangle face inside near/far and the guard band (most faces) that
+  // covers a sample centre, from now on; null for none. The filter must outlive its use.
   void setFilter(TriangleFilter* filter) { filter_ = filter; }
 
   const Mat4& modelViewProjection(uint32_t instance) const { return mvp_[instance]; }
@@ -139,7 +141,8 @@ class FaceTransformer {
   void appendFaceInline(uint32_t faceId, FaceCorners corners, uint32_t count, FrameGeometry& out);
   void appendTriangle(uint32_t faceId, FaceCorners corners, FrameGeometry& out);
   // appendTriangle() in two steps: the checks that need only the snapped corners (degenerate,
-  // back face, hidden tiles: counted, true when the face goes no further), then the rest.
+  // back face: counted; no sample centre covered: not counted, as no set-up ever counted it;
+  // hidden tiles: counted; true when the face goes no further), then the rest.
   bool droppedBeforeDepths(const FixedPoint& a, const FixedPoint& b, const FixedPoint& c,
                            int64_t area, FrameGeometry& out) const;
   void appendTriangleDepths(uint32_t faceId, FaceCorners corners, bool frontFacing,
