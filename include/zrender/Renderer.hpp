@@ -40,7 +40,8 @@ class Renderer {
   const FrameBuffer& buffer() const { return buffer_; }
   const cv::Mat& color() const { return color_; }
   const RenderStats& stats() const { return stats_; }
-  // The faces the last frame transformed and kept (algorithms that cull early keep fewer).
+  // The faces the last frame transformed and kept (algorithms that cull early keep fewer);
+  // their triangles only where the algorithm keeps them (not the octree: FrameInput).
   const FrameGeometry& geometry() const { return geometry_; }
   const VisibilityAlgorithm& algorithm() const { return *algorithm_; }
   VisibilityAlgorithm& algorithm() { return *algorithm_; }

@@ -21,9 +21,9 @@ struct FrameInput {
   FaceTransformer& transformer;
   // Every face transformed, in id order, when the algorithm asked for it (transformsAll());
   // otherwise empty and the algorithm transforms faces as it goes (transformer.transformBatch()
-  // or transformFace()), timing that in RenderStats::lazyTransformMs. After render(), only
-  // geometry.faces is read (the shader's face colors); an algorithm may drop triangles it has
-  // drawn (the octree does, leaf by leaf).
+  // or transformFace()), timing that in RenderStats::lazyTransformMs. After render(), the
+  // renderer reads only geometry.faces (the shader's face colors); an algorithm may drop
+  // triangles it has drawn (the octree does, leaf by leaf).
   FrameGeometry& geometry;
   // Called by algorithms that finish rows in order (top to bottom), with n when sample rows
   // [0, n) hold their final keys, so that they are shaded while still in cache instead of
