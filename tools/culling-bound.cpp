@@ -1,7 +1,9 @@
 // zrender-culling-bound SCENE... [--repeat N] [--leaf-faces N] [--settings FILE]: how fast exact
 // culling could make each scene at best (CullingBound.hpp), as two Markdown tables on stdout: the
 // z-buffer given only the visible faces, and the octree given only the leaves that hold one. A
-// developer's measurement, run by hand; not part of `zrender` or of CI.
+// developer's measurement, run by hand; not part of `zrender` or of CI. With --rows it prints
+// instead, for grid scenes, how much of each row the rows in front of it hide (RowOcclusion.hpp).
+// --eye and --target move the camera as in zrender.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -16,6 +18,7 @@
 #include "zrender/CullingBound.hpp"
 #include "zrender/Error.hpp"
 #include "zrender/ObjLoader.hpp"
+#include "zrender/RowOcclusion.hpp"
 
 int main(int argc, char** argv) {
   using namespace zrender;
@@ -33,6 +36,11 @@ int main(int argc, char** argv) {
                  "octree leaf size, faces (zrender: " + std::to_string(Octree::kLeafFaces) + ")")
       ->check(CLI::Range(1, 1 << 20));
   app.add_option("--settings", settings, "settings file (default: ./settings.json)");
+  bool rowsOnly = false;
+  app.add_flag("--rows", rowsOnly, "print how much of each grid row the rows in front hide");
+  std::vector<double> eye, target;
+  app.add_option("--eye", eye, "camera position")->delimiter(',')->expected(3);
+  app.add_option("--target", target, "point looked at")->delimiter(',')->expected(3);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -48,17 +56,37 @@ int main(int argc, char** argv) {
       CullingBound bound;
     };
     std::vector<Row> rows;
+    SceneOverrides overrides;
+    if (!eye.empty()) overrides.eye = Vec3(eye[0], eye[1], eye[2]);
+    if (!target.empty()) overrides.target = Vec3(target[0], target[1], target[2]);
+    char line[512];
     for (const std::string& name : scenes) {
       Warnings warnings;
-      const SceneSettings s = resolveScene(name, settings, SceneOverrides(), warnings);
+      const SceneSettings s = resolveScene(name, settings, overrides, warnings);
       auto mesh = std::make_shared<const Mesh>(loadObj(s.modelPath, warnings));
       const Scene scene = makeScene(s, mesh, warnings);
       for (const std::string& w : warnings)
         std::cerr << "zrender-culling-bound: warning: " << w << "\n";
-      rows.push_back(Row{name, s.width, s.height,
-                         measureCullingBound(scene, makeCamera(scene), repeat, leafFaces)});
+      if (!rowsOnly) {
+        rows.push_back(Row{name, s.width, s.height,
+                           measureCullingBound(scene, makeCamera(scene), repeat, leafFaces)});
+        continue;
+      }
+      const std::vector<RowOcclusion> occlusion = measureRowOcclusion(scene, makeCamera(scene));
+      if (&name == &scenes.front())  // after the first scene loaded: no table for bad input
+        std::cout << "| scene | row, nearest first | z offset | samples alone | samples visible "
+                     "| hidden by the rows in front |\n|---|---:|---:|---:|---:|---:|\n";
+      for (size_t r = 0; r < occlusion.size(); ++r) {
+        const RowOcclusion& o = occlusion[r];
+        std::snprintf(line, sizeof line, "| %s | %zu | %.3f | %zu | %zu | %.1f%% |\n", name.c_str(),
+                      r + 1, o.offsetZ, o.samplesAlone, o.samplesVisible,
+                      o.samplesAlone
+                          ? 100.0 * (1.0 - double(o.samplesVisible) / double(o.samplesAlone))
+                          : 0.0);
+        std::cout << line;
+      }
     }
-    char line[512];
+    if (rowsOnly) return 0;
     std::cout << "| scene | size | triangles | visible faces (their triangles) "
                  "| zbuffer frame ms | zbuffer raster ms | visible faces only, raster ms "
                  "| raster bound | frame bound | identical |\n"
