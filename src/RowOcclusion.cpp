@@ -9,10 +9,10 @@ namespace zrender {
 
 namespace {
 
-// Samples of `fb` owned by each row (kBackgroundId: none).
-std::vector<size_t> samplesPerRow(const FrameBuffer& fb, const std::vector<uint32_t>& rowOfFace) {
-  std::vector<size_t> samples(
-      rowOfFace.empty() ? 0 : *std::max_element(rowOfFace.begin(), rowOfFace.end()) + 1);
+// Samples of `fb` owned by each of the `rowCount` rows (kBackgroundId: none).
+std::vector<size_t> samplesPerRow(const FrameBuffer& fb, const std::vector<uint32_t>& rowOfFace,
+                                  size_t rowCount) {
+  std::vector<size_t> samples(rowCount);
   for (size_t i = 0; i < fb.size(); ++i) {
     const uint32_t id = keyFaceId(fb.data()[i]);
     if (id != kBackgroundId) ++samples[rowOfFace[id]];
@@ -50,15 +50,14 @@ std::vector<RowOcclusion> measureRowOcclusion(const Scene& scene, const Camera& 
 
   Renderer renderer(scene, "zbuffer");
   renderer.renderFrame(camera);
-  const std::vector<size_t> visible = samplesPerRow(renderer.buffer(), rowOfFace);
+  const std::vector<size_t> visible = samplesPerRow(renderer.buffer(), rowOfFace, rows.size());
   std::vector<RowOcclusion> result;
   for (uint32_t r = 0; r < rows.size(); ++r) {
     renderer.keepTriangles(
         [&rowOfFace, r](const ScreenTriangle& t) { return rowOfFace[t.id] == r; });
     renderer.renderFrame(camera);
-    const std::vector<size_t> alone = samplesPerRow(renderer.buffer(), rowOfFace);
-    result.push_back(RowOcclusion{rows[r].offsetZ, r < alone.size() ? alone[r] : 0,
-                                  r < visible.size() ? visible[r] : 0});
+    const std::vector<size_t> alone = samplesPerRow(renderer.buffer(), rowOfFace, rows.size());
+    result.push_back(RowOcclusion{rows[r].offsetZ, alone[r], visible[r]});
   }
   return result;
 }
