@@ -162,6 +162,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     // burst of load on the machine falls on all of them alike rather than on one algorithm's
     // frames, and the ratios of one run stay comparable.
     std::vector<std::unique_ptr<Renderer>> renderers;
+    renderers.reserve(algorithms.size());
     for (const std::string& algorithm : algorithms)
       renderers.push_back(std::make_unique<Renderer>(scene, algorithm));
     const size_t n = algorithms.size();

@@ -142,7 +142,8 @@ std::string excerpt(std::string_view text, const Json::Value& v) {
     // Do not split a UTF-8 sequence: back up over continuation bytes.
     while (cut > 0 && (static_cast<unsigned char>(flat[cut]) & 0xC0) == 0x80) --cut;
     while (cut > 0 && flat[cut - 1] == ' ') --cut;
-    flat = flat.substr(0, cut) + "...";
+    flat.resize(cut);
+    flat += "...";
   }
   return printable(flat);
 }

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -122,6 +123,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::cerr << "zrender-culling-bound: error: " << e.what() << "\n";
     return 2;
+  } catch (const std::exception& e) {  // out of memory, or a broken invariant: no abort
+    std::cerr << "zrender-culling-bound: error: " << e.what() << "\n";
+    return 1;
   }
   return 0;
 }

@@ -45,7 +45,7 @@ struct EdgeStepper {
   // Branch-free: whether the remainder wraps is data dependent and mispredicts often.
   void step() {
     rem -= remStep;
-    const int64_t wrap = rem >> 63;  // -1 when rem < 0, else 0
+    const int64_t wrap = -int64_t(rem < 0);  // -1 when rem < 0, else 0 (no signed shift)
     rem += denom & wrap;
     column += columnStep - int32_t(wrap);
   }
