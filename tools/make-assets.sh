@@ -20,5 +20,7 @@ $z teapot --shading flat --width 160 --height 120 --eye 1.2,4.2,4.5 --target 0.6
 $z spot --shading texture --turntable 12 -o "/tmp/zrender-turntable-%02d.png" \
   --contact-sheet assets/turntable.png --width 300 --height 300
 rm -f /tmp/zrender-turntable-*.png
+# Polygons drawn natively by the scan-line algorithms, triangulated by the others.
+$z shapes -o assets/shapes.png
 $z crowd -o assets/crowd.png --width 900 --height 900
 $z crowd --shading id -o assets/crowd-ids.png --width 900 --height 900
