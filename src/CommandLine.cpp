@@ -167,6 +167,37 @@ void applyOverrides(const SceneOverrides& o, SceneSettings& s) {
   }
 }
 
+namespace {
+
+// Which of the given options feed each key's rule in validateScene: eye is checked against
+// target, up against the viewing direction target - eye.
+KeyOrigins keyOrigins(const SceneOverrides& o) {
+  KeyOrigins origins;
+  const auto add = [&](const std::string& key, bool given, const char* option) {
+    if (!given) return;
+    std::string& list = origins[key];
+    list += (list.empty() ? "" : ", ") + std::string(option);
+  };
+  add("width", o.width.has_value(), "--width");
+  add("height", o.height.has_value(), "--height");
+  add("project", o.fov.has_value(), "--fov");
+  add("project", o.aspect.has_value(), "--aspect");
+  add("project", o.near.has_value(), "--near");
+  add("project", o.far.has_value(), "--far");
+  add("msaa", o.msaa.has_value(), "--msaa");
+  add("angle", o.angle.has_value(), "--angle");
+  add("axis", o.axis.has_value(), "--axis");
+  add("target", o.target.has_value(), "--target");
+  add("eye", o.eye.has_value(), "--eye");
+  add("eye", o.target.has_value(), "--target");
+  add("up", o.up.has_value(), "--up");
+  add("up", o.eye.has_value(), "--eye");
+  add("up", o.target.has_value(), "--target");
+  return origins;
+}
+
+}  // namespace
+
 SceneSettings resolveScene(const std::string& scene, const std::optional<fs::path>& settingsOption,
                            const SceneOverrides& overrides, Warnings& warnings) {
   std::error_code ec;
@@ -197,7 +228,7 @@ SceneSettings resolveScene(const std::string& scene, const std::optional<fs::pat
     }
   }
   applyOverrides(overrides, result);
-  validateScene(result, where);
+  validateScene(result, where, keyOrigins(overrides));
   return result;
 }
 

@@ -473,10 +473,16 @@ SceneSettings defaultSceneForModel(const fs::path& modelPath) {
   return scene;
 }
 
-void validateScene(const SceneSettings& scene, const std::string& where) {
-  checkSize(where, "width", scene.width);
-  checkSize(where, "height", scene.height);
-  checkProjection(where, scene.fovy, scene.aspect, scene.near, scene.far);
+void validateScene(const SceneSettings& scene, const std::string& sceneWhere,
+                   const KeyOrigins& origins) {
+  // The prefix for one key: the scene, and the options that set what that key's rule checks.
+  const auto at = [&](const std::string& key) {
+    const auto it = origins.find(key);
+    return it == origins.end() ? sceneWhere : sceneWhere + " with " + it->second;
+  };
+  checkSize(at("width"), "width", scene.width);
+  checkSize(at("height"), "height", scene.height);
+  checkProjection(at("project"), scene.fovy, scene.aspect, scene.near, scene.far);
   {
     // Extreme finite values can still overflow the projection (2 far near / (near - far) once
     // far near passes 1e308, 1 / tan of a denormal fovy), and a non-finite camera would draw
@@ -490,31 +496,31 @@ void validateScene(const SceneSettings& scene, const std::string& where) {
     const Mat4 projection = perspective(scene.fovy, aspect, near, far);
     for (int i = 0; i < 16; ++i) {
       if (!std::isfinite(projection.val[i])) {
-        failKey(where, "project",
+        failKey(at("project"), "project",
                 "fovy " + formatNumber(scene.fovy) + ", aspect " + formatNumber(aspect) +
                     ", near " + formatNumber(scene.near) + " and far " + formatNumber(scene.far) +
                     " overflow the projection");
       }
     }
   }
-  checkMsaa(where, scene.msaa);
+  checkMsaa(at("msaa"), scene.msaa);
   if (!std::isfinite(scene.angle)) {
-    failKey(where, "angle", "expected a finite number, got " + formatNumber(scene.angle));
+    failKey(at("angle"), "angle", "expected a finite number, got " + formatNumber(scene.angle));
   }
-  checkDirection(where, "axis", scene.axis);
-  checkDirection(where, "up", scene.up);
-  checkFinite(where, "target", scene.target);
+  checkDirection(at("axis"), "axis", scene.axis);
+  checkDirection(at("up"), "up", scene.up);
+  checkFinite(at("target"), "target", scene.target);
   for (int c : scene.background) {
     if (c < 0 || c > 255) {
-      failKey(where, "background",
+      failKey(at("background"), "background",
               "expected 3 integers from 0 to 255, got [" + std::to_string(scene.background[0]) +
                   ", " + std::to_string(scene.background[1]) + ", " +
                   std::to_string(scene.background[2]) + "]");
     }
   }
   if (scene.grid) {
-    checkGridCount(where, scene.grid->count);
-    checkFinite(where, "grid.spacing", scene.grid->spacing);
+    checkGridCount(at("grid.count"), scene.grid->count);
+    checkFinite(at("grid.spacing"), "grid.spacing", scene.grid->spacing);
   }
 
   // Without an eye, fit still keeps the default viewing direction, down -z (makeCamera puts
@@ -522,14 +528,14 @@ void validateScene(const SceneSettings& scene, const std::string& where) {
   cv::Vec3d direction(0.0, 0.0, -1.0);
   std::string directionName = "the default viewing direction (no eye given) ";
   if (!scene.eye) {
-    if (!scene.fit) failKey(where, "eye", "missing (required unless fit is on)");
+    if (!scene.fit) failKey(at("eye"), "eye", "missing (required unless fit is on)");
   } else {
     const cv::Vec3d eye = *scene.eye;
-    checkFinite(where, "eye", eye);
+    checkFinite(at("eye"), "eye", eye);
     direction = scene.target - eye;
     directionName = "the viewing direction target - eye ";
     if (!isUsableDirection(direction)) {
-      failKey(where, "eye",
+      failKey(at("eye"), "eye",
               "must differ from target " + formatVec(scene.target) + ", got " + formatVec(eye));
     }
   }
@@ -539,7 +545,7 @@ void validateScene(const SceneSettings& scene, const std::string& where) {
   const cv::Vec3d right = (direction / cv::norm(direction)).cross(scene.up / cv::norm(scene.up));
   const double sine = cv::norm(right);
   if (!(sine > 1e-9)) {
-    failKey(where, "up",
+    failKey(at("up"), "up",
             "must not be parallel to " + directionName + formatVec(direction) + ", got " +
                 formatVec(scene.up));
   }

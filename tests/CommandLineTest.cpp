@@ -126,6 +126,85 @@ TEST(CommandLine, DepthAndIdOutputs) {
   EXPECT_EQ(depth16.at<uint16_t>(16, 16), uint16_t(std::lround(depth.at<float>(16, 16) * 65535.0)));
 }
 
+// Two squares facing the eye on a 64 x 64 image (16 pixels per unit at z = 0). The front one
+// at z = 0 (faces 0 and 1) covers pixels 16..47, exactly the pyramid's 16 x 16 tiles 1 and 2
+// in x and y. The back one, the same size at z = -1 (faces 2 and 3), is 3 units from the eye,
+// where the view spans [-3, 3], so it spans window x from 32 - 32 / 3 = 21.33 to 42.67: the
+// pixel centres 21.5..42.5, 22 x 22 = 484 samples, every one behind the front square.
+const char* kTwoSquares =
+    "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\n"
+    "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\n"
+    "f 1 2 3\nf 1 3 4\nf 5 6 7\nf 5 7 8\n";
+
+TEST(CommandLine, StatsInWords) {
+  TempDir dir;
+  dir.write("two.obj", kTwoSquares);
+  dir.write("settings.json", settingsFor("two.obj", "", "64"));
+  // The z-buffer draws in face order: 1024 samples of the front square, then the 484 of the
+  // back one, all tested and none written; 1024 / 1508 = 67.9045% of the tests win.
+  const auto z = runZrender({"sq", "--stats", "-o", dir.file("z.png")}, dir.path);
+  ASSERT_EQ(z.status, 0) << z.err;
+  EXPECT_EQ(z.out,
+            "triangles: 4 rasterized, 0 back-facing, 0 clipped away, 0 degenerate, 0 rejected "
+            "by the z-pyramid\n"
+            "octree: 0 nodes visited, 0 rejected\n"
+            "samples: 1508 depth tests, 1024 written (67.9045% won)\n");
+  // The pyramid's tiles under the back square are all covered by the front one, so both of
+  // its triangles are rejected before any sample test. With --json the words go to stderr.
+  const auto h = runZrender(
+      {"sq", "--stats", "--json", "--alg", "hierarchical", "-o", dir.file("h.png")}, dir.path);
+  ASSERT_EQ(h.status, 0) << h.err;
+  EXPECT_NE(h.err.find(" 2 rejected by the z-pyramid\n"), std::string::npos) << h.err;
+  EXPECT_NE(h.err.find("samples: 1024 depth tests, 1024 written (100% won)\n"), std::string::npos)
+      << h.err;
+  EXPECT_EQ(std::count(h.out.begin(), h.out.end(), '\n'), 1);  // the JSON line alone
+  // The interval scan-line adds its own counters, one per line.
+  const auto i =
+      runZrender({"sq", "--stats", "--alg", "interval", "-o", dir.file("i.png")}, dir.path);
+  ASSERT_EQ(i.status, 0) << i.err;
+  EXPECT_NE(i.out.find("\nspans: "), std::string::npos) << i.out;
+}
+
+// MSAA 4 on a 4 x 4 image: depth and id images hold each pixel's nearest sample.
+// Far square (faces 0, 1) at z = -2, 4 units from the eye where the view spans [-4, 4]: x from
+// -4 to 1 puts its right edge at window x = (1 / 4 + 1) * 2 = 2.5, so pixel column 2 has two of
+// its four samples (x = 2.25) on it and two (x = 2.75) on the background, and column 3 none.
+// Near triangle (face 2) at z = 0, where window (x, y) = (X + 2, 2 - Y): its corners are at
+// window (1.6, 1.6), (1.6, 2), (2, 1.6), so of all samples it covers only (1.75, 1.75), the
+// last sample of pixel (1, 1).
+TEST(CommandLine, MsaaDepthAndIdsHoldTheNearestSample) {
+  TempDir dir;
+  dir.write("m.obj",
+            "v -4 -4 -2\nv 1 -4 -2\nv 1 4 -2\nv -4 4 -2\n"
+            "v -0.4 0.4 0\nv -0.4 0 0\nv 0 0.4 0\n"
+            "f 1 2 3\nf 1 3 4\nf 5 6 7\n");
+  dir.write("settings.json", settingsFor("m.obj", R"(, "msaa": 4)", "4"));
+  const auto r = runZrender(
+      {"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.tif"), "--ids", dir.file("i.png")},
+      dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const cv::Mat ids = cv::imread(dir.file("i.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat depth = cv::imread(dir.file("d.tif"), cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(ids.type(), CV_8UC3);
+  ASSERT_EQ(depth.type(), CV_32FC1);
+  const auto id = [&](int x, int y) { return int(ids.at<cv::Vec3b>(y, x)[2]) - 1; };
+  // One sample of four is enough, and the near face wins over the smaller ids of the far one.
+  EXPECT_EQ(id(1, 1), 2);
+  // Window depth (z_ndc + 1) / 2 with near 0.1, far 10: 95 / 99 at 2 units, 65 / 66 at 4.
+  EXPECT_NEAR(depth.at<float>(1, 1), 95.0 / 99.0, 1e-6);
+  EXPECT_NEAR(depth.at<float>(0, 0), 65.0 / 66.0, 1e-6);
+  // Column 2: two far samples, two background: the far square. Its diagonal runs from window
+  // (0, 4) to (2.5, 0), y = 4 - 1.6 x, so at x = 2.25 (y = 0.4) the sample at y = 0.25 is on
+  // face 1 and the one at y = 0.75 on face 0; at equal depth the smaller id wins.
+  EXPECT_EQ(id(2, 0), 0);
+  EXPECT_NEAR(depth.at<float>(0, 2), 65.0 / 66.0, 1e-6);
+  // Column 3: background (id image 0, depth 1).
+  for (int y = 0; y < 4; ++y) {
+    EXPECT_EQ(id(3, y), -1) << y;
+    EXPECT_EQ(depth.at<float>(y, 3), 1.0f) << y;
+  }
+}
+
 TEST(CommandLine, UnknownSettingsKeyIsAWarning) {
   TempDir dir;
   dir.write("sq.obj", kSquare);
@@ -164,8 +243,8 @@ TEST_P(CommandLineErrors, OneLineExitTwoNoOutput) {
   if (!hasOutput) args.insert(args.end(), {"-o", dir.file("out.png")});
   const auto r = runZrender(args, dir.path);
   expectCleanError(r, c.mustName);
-  EXPECT_FALSE(fs::exists(dir.file("out.png")));
-  EXPECT_FALSE(fs::exists(dir.file("sq.png")));
+  // Nothing written: only the model and the settings file are in the folder.
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -180,7 +259,48 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"EmptyModel", "# nothing\n", "", {}, {"m.obj", "no faces"}},
         BadInput{
             "WrongKeyType", kSquare, R"(, "fit": "yes")", {}, {"settings.json", "'sq'", "'fit'"}},
-        BadInput{"SizeOutOfRangeOnCommandLine", kSquare, "", {"--width", "0"}, {"width"}},
+        // A value from the command line: the error names the option as well as the scene.
+        BadInput{"SizeOutOfRangeOnCommandLine",
+                 kSquare,
+                 "",
+                 {"--width", "0"},
+                 {"settings.json: scene 'sq' with --width: key 'width': ", "got 0"}},
+        BadInput{"FovNotFinite",
+                 kSquare,
+                 "",
+                 {"--fov", "inf"},
+                 {"scene 'sq' with --fov: key 'project': ", "[inf, 0, 0.1, 10]"}},
+        BadInput{"FarBeforeNearOnCommandLine",
+                 kSquare,
+                 "",
+                 {"--near", "1", "--far", "0.5"},
+                 {"scene 'sq' with --near, --far: key 'project': ", "near 1 and far 0.5"}},
+        BadInput{"AngleNotFinite",
+                 kSquare,
+                 "",
+                 {"--angle", "nan"},
+                 {"scene 'sq' with --angle: key 'angle': ", "got nan"}},
+        // The file's eye is (0, 0, 2): a target there leaves no viewing direction.
+        BadInput{"TargetOnTheEye",
+                 kSquare,
+                 "",
+                 {"--target", "0,0,2"},
+                 {"scene 'sq' with --target: key 'eye': must differ from target [0, 0, 2]"}},
+        BadInput{"TurntableWithDepth",
+                 kSquare,
+                 "",
+                 {"--turntable", "3", "--depth", "d.tif", "-o", "f%d.png"},
+                 {"command line", "--depth", "--turntable"}},
+        BadInput{"ContactSheetWithoutTurntable",
+                 kSquare,
+                 "",
+                 {"--contact-sheet", "sheet.png"},
+                 {"command line", "--contact-sheet needs --turntable"}},
+        BadInput{"FramePatternWithAStringDirective",
+                 kSquare,
+                 "",
+                 {"--turntable", "2", "-o", "f%5s.png"},
+                 {"-o", "one %d", "'f%5s.png'"}},
         BadInput{"UnknownAlgorithm", kSquare, "", {"--alg", "raytrace"}, {"raytrace", "zbuffer"}},
         BadInput{"UnknownShading", kSquare, "", {"--shading", "toon"}, {"toon", "phong"}},
         BadInput{"UnsupportedExtension", kSquare, "", {"-o", "x.gif"}, {"x.gif", ".png"}},
@@ -260,6 +380,35 @@ TEST(Turntable, PatternWithoutADirectiveIsRefused) {
   dir.write("settings.json", settingsFor("sq.obj"));
   expectCleanError(runZrender({"sq", "--turntable", "3", "-o", dir.file("x.png")}, dir.path),
                    {"%d", "x.png"});
+}
+
+TEST(Turntable, PercentSignsAndAWidthInThePattern) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  const auto r =
+      runZrender({"sq", "--turntable", "2", "-o", dir.file("f/100%%-%03d.png")}, dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir.file("f/100%-000.png")));
+  EXPECT_TRUE(fs::exists(dir.file("f/100%-001.png")));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.file("f")), fs::directory_iterator()), 2);
+}
+
+TEST(Bench, AlgsChoosesTheRowsAndNamesAreChecked) {
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));  // not "bench": true, so named below
+  const auto r = runZrender({"bench", "sq", "--algs", "octree,zbuffer", "--repeat", "1"}, dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("| sq | 32x32 | octree |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| sq | 32x32 | zbuffer |"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("| scanline |"), std::string::npos) << r.out;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 6) << r.out;  // title, blank, 2 + 2
+
+  expectCleanError(runZrender({"bench", "sq", "--algs", "zbuffer,nope"}, dir.path),
+                   {"unknown algorithm 'nope'", "octree"});
+  expectCleanError(runZrender({"bench"}, dir.path),
+                   {"settings.json", "no scene has \"bench\": true"});
 }
 
 TEST(Bench, PrintsAVerifiedTableAndWritesItsFiles) {
