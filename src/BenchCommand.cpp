@@ -120,6 +120,19 @@ void writeTextAtomically(const fs::path& path, const std::string& text) {
   }
 }
 
+// A bench can run for minutes; an output that cannot be written should fail before it starts,
+// not after. Creates the missing parent folders (the write would) and a probe file beside the
+// target, removed at once.
+void checkWritable(const fs::path& path) {
+  std::error_code ec;
+  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
+  const fs::path probe = path.parent_path() /
+                         ("." + path.filename().string() + ".probe-" + std::to_string(::getpid()));
+  const bool ok = std::ofstream(probe, std::ios::binary).is_open();
+  fs::remove(probe, ec);
+  if (!ok) throw InputError(path.string() + ": cannot write file");
+}
+
 }  // namespace
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
@@ -136,6 +149,8 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
       algorithms.push_back(a);
   }
   if (options.chart) checkOutputExtension(*options.chart, {".png"}, "chart");
+  for (const auto& path : {options.markdown, options.json, options.chart})
+    if (path) checkWritable(*path);
 
   std::vector<std::string> scenes = options.scenes;
   if (scenes.empty()) {

@@ -407,6 +407,11 @@ TEST(Bench, AlgsChoosesTheRowsAndNamesAreChecked) {
 
   expectCleanError(runZrender({"bench", "sq", "--algs", "zbuffer,nope"}, dir.path),
                    {"unknown algorithm 'nope'", "octree"});
+  // An output that cannot be written fails before the bench runs: no table is printed.
+  const auto unwritable = runZrender(
+      {"bench", "sq", "--repeat", "1", "--markdown", "/proc/zrender-nope/t.md"}, dir.path);
+  expectCleanError(unwritable, {"/proc/zrender-nope/t.md", "cannot write file"});
+  EXPECT_EQ(unwritable.out, "");
   expectCleanError(runZrender({"bench"}, dir.path),
                    {"settings.json", "no scene has \"bench\": true"});
 }

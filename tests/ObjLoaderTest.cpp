@@ -257,6 +257,19 @@ TEST_F(ObjLoaderTest, MaterialWithTexture) {
   EXPECT_EQ(mesh.faceMaterial, (Ints{-1, 1, 0}));
 }
 
+// Exporters on Windows write map_Kd with backslashes; the file is found with slashes.
+TEST_F(ObjLoaderTest, TexturePathWithBackslashes) {
+  fs::create_directories(dir_ / "maps");
+  write("maps/wood.png", "only its existence matters here");
+  write("m.mtl", "newmtl wood\nmap_Kd maps\\wood.png\n");
+  Warnings warnings;
+  const Mesh mesh = loadObj(
+      write("m.obj", std::string("mtllib m.mtl\nusemtl wood\n") + kSquare + "f 1 2 3\n"), warnings);
+  ASSERT_EQ(mesh.materials.size(), 1u);
+  EXPECT_EQ(mesh.materials[0].diffuseTexture, (dir_ / "maps/wood.png").string());
+  EXPECT_TRUE(warnings.empty());
+}
+
 TEST_F(ObjLoaderTest, MissingMtlIsAWarning) {
   Warnings warnings;
   const Mesh mesh =

@@ -373,6 +373,9 @@ TEST(SettingsTest, UnknownKeysWarn) {
 TEST(SettingsTest, MessagesStayOnOneLine) {
   EXPECT_EQ(parseError(R"({"a\nb": {"width": 1}})"),
             "settings.json: scene 'a\\nb': key 'path': missing");
+  // Other control characters are shown as escapes, never written raw to the terminal.
+  EXPECT_EQ(parseError(R"({"a\tb\u0001c\u007f": {"width": 1}})"),
+            "settings.json: scene 'a\\tb\\x01c\\x7f': key 'path': missing");
 }
 
 TEST(SettingsTest, ValidateSceneEyeRules) {
@@ -458,6 +461,28 @@ TEST(SettingsTest, LoadSettingsFromFile) {
   EXPECT_EQ(settings.scenes.at("teapot").width, 32);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0], file.string() + ": scene 'teapot': unknown key 'oops' (ignored)");
+}
+
+TEST(SettingsTest, LoadSettingsRefusesAHugeFile) {
+  const fs::path folder = uniqueTempPath("zrender-settings");
+  ASSERT_TRUE(fs::create_directories(folder));
+  const fs::path file = folder / "settings.json";
+  {
+    // 64 MiB of white space and one more byte: over the limit before any JSON is parsed.
+    std::ofstream out(file, std::ios::binary);
+    const std::string block(1 << 20, ' ');
+    for (int i = 0; i < 64; ++i) out << block;
+    out << "{";
+  }
+  Warnings warnings;
+  std::string message = "no error";
+  try {
+    loadSettings(file, warnings);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  fs::remove_all(folder);
+  EXPECT_EQ(message, file.string() + ": file too large for a settings file (over 64 MiB)");
 }
 
 TEST(SettingsTest, LoadSettingsMissingFile) {
