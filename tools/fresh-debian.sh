@@ -45,4 +45,4 @@ for round in 1 2; do
   echo "fresh-debian: round $round: tools/test.sh"
   chroot "$dest" bash -c 'cd /work/main && tools/test.sh' | tail -3
 done
-echo "fresh-debian: both commands passed twice in $dest"
+echo "fresh-debian: both commands passed twice in $dest ($((SECONDS / 60)) min $((SECONDS % 60)) s)"
