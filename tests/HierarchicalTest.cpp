@@ -285,6 +285,52 @@ TEST(DepthPyramidTest, NodesBoundTheBufferAfterRandomWrites) {
   EXPECT_GT(rejected, 0);
 }
 
+TEST(DepthPyramidTest, EveryNodeIsExactAfterEveryTriangle) {
+  // Not only a bound (above): after each triangle, every node at every level holds the largest
+  // key below it, so a key one above that maximum is occluded over the node's samples. A node
+  // left too large (a rescan not propagated, a parent not lowered) still gives exact pictures,
+  // but culls less; this catches it. Two triangles first cover the whole buffer, so that no
+  // sample stays clear.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const auto& size : std::vector<std::pair<int, int>>{{100, 70}, {200, 130}, {33, 130}}) {
+    const int w = size.first, h = size.second;
+    SCOPED_TRACE(std::to_string(w) + " x " + std::to_string(h));
+    FrameBuffer fb;
+    fb.resize(w, h);
+    HzbRasterizer r;
+    r.begin(fb);
+    RenderStats stats;
+    r.drawTriangle(makeTriangle(0, 0, w, 0, w, h, 1, 0.95), stats);
+    r.drawTriangle(makeTriangle(0, 0, w, h, 0, h, 1, 0.95), stats);
+    const int tiles = DepthPyramid::kTileSize;
+    for (uint32_t i = 0; i < 120; ++i) {
+      double p[6];
+      for (int k = 0; k < 6; k += 2) p[k] = unit(rng) * w, p[k + 1] = unit(rng) * h;
+      ScreenTriangle t = makeTriangle(p[0], p[1], p[2], p[3], p[4], p[5], 2 + i, 0.9 * unit(rng));
+      if (orient2d(t.v[0], t.v[1], t.v[2]) < 0) std::swap(t.v[1], t.v[2]);
+      t.plane.a = (unit(rng) - 0.5) * 0.002;
+      if (orient2d(t.v[0], t.v[1], t.v[2]) <= 0) continue;
+      r.drawTriangle(t, stats);
+      for (int level = 0; level < r.pyramid().levelCount(); ++level) {
+        const int span = tiles << level;  // samples per node side at this level
+        for (int y0 = 0; y0 < h; y0 += span) {
+          for (int x0 = 0; x0 < w; x0 += span) {
+            const int x1 = std::min(x0 + span, w) - 1, y1 = std::min(y0 + span, h) - 1;
+            DepthKey m = 0;
+            for (int y = y0; y <= y1; ++y)
+              for (int x = x0; x <= x1; ++x) m = std::max(m, fb.row(y)[x]);
+            ASSERT_LT(m, kClearKey);
+            ASSERT_TRUE(r.pyramid().occludes(x0, y0, x1, y1, m + 1, 1))
+                << "triangle " << i << ", level " << level << ", node at " << x0 << ", " << y0;
+            ASSERT_FALSE(r.pyramid().occludes(x0, y0, x1, y1, m, 1));
+          }
+        }
+      }
+    }
+  }
+}
+
 // A floor of n x n cells rising 0.05 per row, from z = -6 (far) to z = 4 (behind a tiny
 // scene's eye), x in [-6, 6] (past the image's sides): quads, or with `mixed` two triangles in
 // two cells of three.
@@ -857,6 +903,39 @@ TEST(OctreeTest, HiddenNodesHoldNoVisibleFace) {
   }
   EXPECT_GT(hiddenNodes, 0);
   EXPECT_GT(hiddenFaces, 1000);
+}
+
+TEST(OctreeTest, NodeOnTheOccluderIsNotHidden) {
+  // The node test allows for rounding by lowering the box's nearest depth; lowering it, not
+  // raising it, is what keeps it exact. A wall at z = 0 (faces 0, 1, 4 x 4 units) fills a
+  // 64 x 64 pyramid; flat boxes 1 x 1 at z = 0 (on the wall: a face there ties with it, so must
+  // be kept), at z = 1e-5 (in front) and at z = -0.01 (behind) are tested.
+  SceneSettings s = test::tinySettings(64);
+  Warnings warnings;
+  const Scene scene = makeScene(
+      s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}),
+      warnings);
+  const Camera camera = makeCamera(scene);
+  FaceTransformer transformer(scene, camera, 1, false);
+  FrameGeometry wall;
+  transformer.transformFace(0, wall);
+  transformer.transformFace(1, wall);
+  FrameBuffer fb;
+  fb.resize(wall.width, wall.height);
+  HzbRasterizer r;
+  r.begin(fb);
+  RenderStats stats;
+  for (const ScreenTriangle& t : wall.triangles) r.drawTriangle(t, stats);
+  const OctreeNodeTest test(camera, fb.width(), fb.height());
+  const auto flatNode = [](float z) {
+    OctreeNode node{};
+    for (int a = 0; a < 2; ++a) node.lo[a] = -0.5f, node.hi[a] = 0.5f;
+    node.lo[2] = node.hi[2] = z;
+    return node;
+  };
+  EXPECT_FALSE(test.hidden(flatNode(0.0f), r.pyramid()));
+  EXPECT_FALSE(test.hidden(flatNode(1e-5f), r.pyramid()));
+  EXPECT_TRUE(test.hidden(flatNode(-0.01f), r.pyramid()));
 }
 
 // ---------------------------------------------------------------------------------------------
