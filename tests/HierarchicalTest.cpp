@@ -938,6 +938,44 @@ TEST(OctreeTest, NodeOnTheOccluderIsNotHidden) {
   EXPECT_TRUE(test.hidden(flatNode(-0.01f), r.pyramid()));
 }
 
+TEST(OctreeTest, NodeWhoseEdgeSnapsOntoAClearSampleIsNotHidden) {
+  // A flat box at z = -0.5 (2.5 units from the eye of a 64 x 64 tiny scene, window x =
+  // (X / 2.5 + 1) * 32) whose left side projects to window x = 15.5 + 1.3e-6: a face with a
+  // corner there snaps to x = 15.5 (1/256 sample grid) and, as a left edge, covers the centre
+  // of sample column 15, the last of the first column of 16 x 16 pyramid tiles. An occluder
+  // at depth 0.5 covers every sample but that column, so the node must be kept; with the
+  // column covered too, it is hidden.
+  SceneSettings s = test::tinySettings(64);
+  Warnings warnings;
+  const Scene scene =
+      makeScene(s, test::makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}), warnings);
+  const Camera camera = makeCamera(scene);
+  OctreeNode node{};
+  node.lo[0] = float((15.5 / 32.0 - 1.0) * 2.5 + 1e-7);
+  node.hi[0] = 0.5f;
+  node.lo[1] = -0.5f, node.hi[1] = 0.5f;
+  node.lo[2] = node.hi[2] = -0.5f;
+  const auto hiddenBehind = [&](bool coverColumn15) {
+    FrameBuffer fb;
+    fb.resize(64, 64);
+    HzbRasterizer r;
+    r.begin(fb);
+    RenderStats stats;
+    // Samples 0..14 (centres up to 14.5 < 15), and 16..63 (centres from 16.5 > 16) or 15..63.
+    const double right = coverColumn15 ? 15 : 16;
+    r.drawTriangle(makeTriangle(0, 0, 15, 0, 15, 64, 7, 0.5), stats);
+    r.drawTriangle(makeTriangle(0, 0, 15, 64, 0, 64, 7, 0.5), stats);
+    r.drawTriangle(makeTriangle(right, 0, 64, 0, 64, 64, 7, 0.5), stats);
+    r.drawTriangle(makeTriangle(right, 0, 64, 64, right, 64, 7, 0.5), stats);
+    EXPECT_EQ(keyFaceId(fb.row(30)[15]) == 7, coverColumn15);
+    EXPECT_EQ(keyFaceId(fb.row(30)[14]), 7u);
+    EXPECT_EQ(keyFaceId(fb.row(30)[16]), 7u);
+    return OctreeNodeTest(camera, 64, 64).hidden(node, r.pyramid());
+  };
+  EXPECT_FALSE(hiddenBehind(false));
+  EXPECT_TRUE(hiddenBehind(true));
+}
+
 // ---------------------------------------------------------------------------------------------
 // Whole frames against the z-buffer.
 
