@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <new>
@@ -205,6 +206,76 @@ TEST(Shading, FlatModeIsTheLambertTermSeenFromTheCentroid) {
   EXPECT_EQ(test::render(mesh, s, "zbuffer").color.at<cv::Vec3b>(3, 3), cv::Vec3b(255, 255, 255));
   s.angle = 60.0;
   EXPECT_EQ(test::render(mesh, s, "zbuffer").color.at<cv::Vec3b>(3, 3), cv::Vec3b(128, 128, 128));
+}
+
+// Blinn–Phong with the light at the eye, as the README states it, for one channel in 0..1:
+// base (ambient 0.1 + 0.9 d) + white specular 0.3 d^64, d = n . toEye; then 8 bits.
+int litChannel(double base, double d) {
+  const double c = base * (0.1 + 0.9 * d) + 0.3 * std::pow(d, 64.0);
+  return int(std::lround(std::clamp(c, 0.0, 1.0) * 255.0));
+}
+
+// d for the pixel (column, row) of a size x size tiny scene (eye (0, 0, 2), 90 degrees) on a
+// plane through the origin with unit normal (sin a, 0, cos a): the ray from the eye through the
+// pixel centre's point (X, Y, 0) has direction D = (X, Y, -2), and d = n . (-D) / |D|.
+double lambertAt(int size, int column, int row, double degrees) {
+  const double x = (column + 0.5) * 4.0 / size - 2.0, y = 2.0 - (row + 0.5) * 4.0 / size;
+  const double a = degrees * M_PI / 180.0;
+  return (2.0 * std::cos(a) - x * std::sin(a)) / std::sqrt(x * x + y * y + 4.0);
+}
+
+TEST(Shading, PhongIsBlinnPhongWithTheLightAtTheEye) {
+  // A square without material (base gray 0.8), facing the eye and then turned 60 degrees
+  // about Y (normal (sin 60, 0, cos 60)): every covered pixel as the formula gives it.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  SceneSettings s = test::tinySettings(16);
+  s.shading = ShadingMode::Phong;
+  for (double degrees : {0.0, 60.0}) {
+    s.angle = degrees;
+    const test::Rendered r = test::render(mesh, s, "zbuffer");
+    int covered = 0;
+    for (int row = 0; row < 16; ++row) {
+      for (int column = 0; column < 16; ++column) {
+        if (keyFaceId(r.buffer.row(row)[column]) == kBackgroundId) continue;
+        ++covered;
+        const int g = litChannel(0.8, lambertAt(16, column, row, degrees));
+        EXPECT_EQ(r.color.at<cv::Vec3b>(row, column), cv::Vec3b(g, g, g))
+            << degrees << " degrees, pixel " << column << ", " << row;
+      }
+    }
+    EXPECT_GE(covered, degrees == 0.0 ? 64 : 24) << degrees;
+  }
+}
+
+TEST(Shading, TextureIsBilinearWrappedWithVUp) {
+  // The square with UVs (0, 0) at (-1, -1) to (1, 1) at (1, 1) and a 2 x 2 texture whose red
+  // grows to the right (0 in column 0, 255 in column 1) and whose blue is 255 in the top row
+  // (row 0 of the image, v near 1) and 0 in the bottom one. Texel centres are at u, v = 0.25
+  // and 0.75, so between them bilinear filtering gives red 2u - 0.5 and blue 2v - 0.5 (green
+  // 0), lit as phong. Pixels 6..9 of 16 have u, v in (0.25, 0.75): X, Y in (-0.5, 0.5).
+  auto base = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  auto mesh = std::make_shared<Mesh>(*base);
+  mesh->texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  for (Corner& c : mesh->corners) c.texcoord = c.position;
+  SceneSettings s = test::tinySettings(16);
+  s.shading = ShadingMode::Texture;
+  Warnings warnings;
+  Scene scene = makeScene(s, mesh, warnings);
+  scene.texture = cv::Mat(2, 2, CV_8UC3);
+  for (int row = 0; row < 2; ++row)
+    for (int column = 0; column < 2; ++column)
+      scene.texture.at<cv::Vec3b>(row, column) = cv::Vec3b(row == 0 ? 255 : 0, 0, column * 255);
+  const test::Rendered r = test::render(scene, "zbuffer");
+  for (int row = 6; row <= 9; ++row) {
+    for (int column = 6; column <= 9; ++column) {
+      const double u = ((column + 0.5) / 4.0 - 2.0 + 1.0) / 2.0;
+      const double v = (2.0 - (row + 0.5) / 4.0 + 1.0) / 2.0;
+      const double d = lambertAt(16, column, row, 0.0);
+      const cv::Vec3b bgr(litChannel(2 * v - 0.5, d), litChannel(0.0, d),
+                          litChannel(2 * u - 0.5, d));
+      EXPECT_EQ(r.color.at<cv::Vec3b>(row, column), bgr) << "pixel " << column << ", " << row;
+    }
+  }
 }
 
 TEST(Shading, GridInstancesGetTheirOwnFaceColors) {
