@@ -249,10 +249,11 @@ TEST(Shading, PhongIsBlinnPhongWithTheLightAtTheEye) {
 
 TEST(Shading, TextureIsBilinearWrappedWithVUp) {
   // The square with UVs (0, 0) at (-1, -1) to (1, 1) at (1, 1) and a 2 x 2 texture whose red
-  // grows to the right (0 in column 0, 255 in column 1) and whose blue is 255 in the top row
-  // (row 0 of the image, v near 1) and 0 in the bottom one. Texel centres are at u, v = 0.25
-  // and 0.75, so between them bilinear filtering gives red 2u - 0.5 and blue 2v - 0.5 (green
-  // 0), lit as phong. Pixels 6..9 of 16 have u, v in (0.25, 0.75): X, Y in (-0.5, 0.5).
+  // is 0 in column 0 and 255 in column 1, and whose blue is 255 in the top row (row 0 of the
+  // image, v near 1) and 0 in the bottom one. Texel centres are at u, v = 0.25 and 0.75, so
+  // between them bilinear filtering gives red 2u - 0.5 and blue 2v - 0.5; outside, wrapping
+  // blends with the texel on the other side: 0.5 - 2t below 0.25, 2.5 - 2t above 0.75.
+  // Green stays 0; the result is lit as phong. The square covers pixels 4..11 of 16.
   auto base = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
   auto mesh = std::make_shared<Mesh>(*base);
   mesh->texcoords = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -266,16 +267,19 @@ TEST(Shading, TextureIsBilinearWrappedWithVUp) {
     for (int column = 0; column < 2; ++column)
       scene.texture.at<cv::Vec3b>(row, column) = cv::Vec3b(row == 0 ? 255 : 0, 0, column * 255);
   const test::Rendered r = test::render(scene, "zbuffer");
-  for (int row = 6; row <= 9; ++row) {
-    for (int column = 6; column <= 9; ++column) {
+  const auto weight = [](double t) {
+    return t < 0.25 ? 0.5 - 2 * t : t > 0.75 ? 2.5 - 2 * t : 2 * t - 0.5;
+  };
+  for (int row = 4; row <= 11; ++row) {
+    for (int column = 4; column <= 11; ++column) {
       const double u = ((column + 0.5) / 4.0 - 2.0 + 1.0) / 2.0;
       const double v = (2.0 - (row + 0.5) / 4.0 + 1.0) / 2.0;
       const double d = lambertAt(16, column, row, 0.0);
-      const cv::Vec3b bgr(litChannel(2 * v - 0.5, d), litChannel(0.0, d),
-                          litChannel(2 * u - 0.5, d));
+      const cv::Vec3b bgr(litChannel(weight(v), d), litChannel(0.0, d), litChannel(weight(u), d));
       EXPECT_EQ(r.color.at<cv::Vec3b>(row, column), bgr) << "pixel " << column << ", " << row;
     }
   }
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 3), cv::Vec3b(0, 0, 0));  // background
 }
 
 TEST(Shading, GridInstancesGetTheirOwnFaceColors) {
