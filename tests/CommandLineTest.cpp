@@ -8,6 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+#include <set>
 
 #include "TestSupport.hpp"
 #include "zrender/VisibilityAlgorithm.hpp"
@@ -124,6 +125,31 @@ TEST(CommandLine, DepthAndIdOutputs) {
   ASSERT_EQ(depth16.type(), CV_16UC1);
   EXPECT_EQ(depth16.at<uint16_t>(0, 0), 65535);
   EXPECT_EQ(depth16.at<uint16_t>(16, 16), uint16_t(std::lround(depth.at<float>(16, 16) * 65535.0)));
+
+  // Turned 40 degrees, the square's depth varies across it: every pixel of the 16-bit image is
+  // the rounded float depth, round(depth x 65535), background 65535.
+  const auto turned = runZrender(
+      {"sq", "--angle", "40", "-o", dir.file("c.png"), "--depth", dir.file("t.tif")}, dir.path);
+  ASSERT_EQ(turned.status, 0) << turned.err;
+  ASSERT_EQ(
+      runZrender({"sq", "--angle", "40", "-o", dir.file("c.png"), "--depth", dir.file("t.png")},
+                 dir.path)
+          .status,
+      0);
+  const cv::Mat t32 = cv::imread(dir.file("t.tif"), cv::IMREAD_UNCHANGED);
+  const cv::Mat t16 = cv::imread(dir.file("t.png"), cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(t32.type(), CV_32FC1);
+  ASSERT_EQ(t16.type(), CV_16UC1);
+  std::set<float> depths;
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 32; ++x) {
+      const float d = t32.at<float>(y, x);
+      EXPECT_EQ(t16.at<uint16_t>(y, x), uint16_t(std::lround(double(d) * 65535.0)))
+          << x << ", " << y;
+      depths.insert(d);
+    }
+  }
+  EXPECT_GT(depths.size(), 10u);
 }
 
 // Two squares facing the eye on a 64 x 64 image (16 pixels per unit at z = 0). The front one

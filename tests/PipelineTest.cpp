@@ -91,6 +91,41 @@ TEST(TinyScene, SquareQuadCoversExactlyItsSixteenPixels) {
   EXPECT_EQ(r.stats.trianglesRasterized, 2u);  // a quad is drawn as two pieces
 }
 
+TEST(TinyScene, AspectFromTheSettingsWidensTheView) {
+  // Aspect 2 on a square image: the view spans [-4, 4] across and [-2, 2] down at the
+  // square's distance, so the square [-1, 1]^2 spans columns 3..5 (centres 3.5, 4.5) and rows
+  // 2..6 (centres 2.5 .. 5.5).
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}}, {{0, 1, 2, 3}});
+  SceneSettings s = test::tinySettings(8);
+  s.aspect = 2.0;
+  const test::Rendered r = test::render(mesh, s, "zbuffer");
+  EXPECT_EQ(idMap(r.buffer), picture({"........",  //
+                                      "........",  //
+                                      "...00...",  //
+                                      "...00...",  //
+                                      "...00...",  //
+                                      "...00...",  //
+                                      "........",  //
+                                      "........"}));
+}
+
+TEST(TinyScene, GridInstancesAreCentredOnTheOrigin) {
+  // SPEC §3: instance (i, j, k) moves by ((i - (nx-1)/2) sx, (j - (ny-1)/2) sy, (k - (nz-1)/2)
+  // sz), numbered i fastest: with counts 2 x 2 x 2 every offset is half a spacing either way.
+  auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}, {{0, 1, 2}});
+  SceneSettings s = test::tinySettings(8);
+  s.grid = Grid{{2, 2, 2}, {1.0, 2.0, 3.0}};
+  Warnings warnings;
+  const Scene scene = makeScene(s, mesh, warnings);
+  ASSERT_EQ(scene.instanceCount(), 8u);
+  for (uint32_t n = 0; n < 8; ++n) {
+    const Vec3 moved = transformPoint(scene.modelMatrix(n), Vec3(0, 0, 0));
+    const Vec3 expected((n % 2 == 0 ? -0.5 : 0.5), (n / 2 % 2 == 0 ? -1.0 : 1.0),
+                        (n / 4 == 0 ? -1.5 : 1.5));
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(moved[a], expected[a]) << "instance " << n << ", " << a;
+  }
+}
+
 TEST(TinyScene, ConcaveLShapeCoversExactlyItsArea) {
   // L: [-1, 1] x [-1, 0] plus [-1, 0] x [0, 1], counter-clockwise seen from +Z.
   auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 1, 0}, {-1, 1, 0}},
