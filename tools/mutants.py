@@ -1,0 +1,209 @@
+#!/usr/bin/env python3
+"""Mutation check of the test suite: each mutant below changes one rule of the renderer the way
+a plausible bug would; the suite must fail on it ("killed"). A mutant that survives shows a
+rule no test pins down, unless it is marked equivalent (it cannot change any output; the
+reason is given).
+
+Works in a git worktree of HEAD in a temporary folder (the checkout is never touched), with
+the reference models linked from ../shared/models, a Release build, and ctest for each mutant.
+About a minute per mutant on 2 cores. Not part of CI.
+
+    tools/mutants.py               every mutant
+    tools/mutants.py M4 M12        the mutants named
+
+Exit status 1 when a mutant that is not equivalent survives.
+"""
+import dataclasses
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+from typing import Optional
+
+
+@dataclasses.dataclass
+class Mutant:
+    name: str       # "M4 what it breaks"
+    path: str       # file, relative to the project
+    old: str        # text that must occur exactly once
+    new: str
+    equivalent: Optional[str] = None  # why it cannot change any output
+
+
+MUTANTS = [
+    Mutant("M1 top-left: horizontal top edge rule", "include/zrender/RasterRules.hpp",
+           "((dy == 0) & (dx <= 0))",
+           "((dy == 0) & (dx < 0))",
+           equivalent='dy == 0 and dx == 0 is a zero-length edge, which no real triangle has'),
+    Mutant("M2 top-left: left edge rule", "include/zrender/RasterRules.hpp",
+           "int64_t((dy > 0) |",
+           "int64_t((dy >= 0) |"),
+    Mutant("M3 pyramid rejects ties", "src/DepthPyramid.cpp",
+           "if (key > maxOver(level",
+           "if (key >= maxOver(level",
+           equivalent='keys end in the face id, so a triangle key equals a sample key only for samples of that face itself'),
+    Mutant("M4 octree box depth margin upward", "src/OctreeAlgorithm.cpp",
+           "z0 - 1e-6 * (1.0 + std::abs(z0))",
+           "z0 + 1e-6 * (1.0 + std::abs(z0))"),
+    Mutant("M5 octree rejects boxes crossing near", "src/OctreeAlgorithm.cpp",
+           "w0 > 0.0)) return false;",
+           "w0 > -1e300)) return false;",
+           equivalent='the inFront test above already requires w > 0 at every corner'),
+    Mutant("M6 octree box less slack", "src/OctreeAlgorithm.cpp",
+           "std::floor(x0 - 1.5)",
+           "std::floor(x0 + 0.5)"),
+    Mutant("M7 cull front faces", "src/FaceTransformer.cpp",
+           "if (cull_ && area > 0) {",
+           "if (cull_ && area < 0) {"),
+    Mutant("M8 tie-break by larger id", "include/zrender/RasterRules.hpp",
+           "return (DepthKey(floatBits(depth)) << 32) | faceId;",
+           "return (DepthKey(floatBits(depth)) << 32) | (0xffffffffu - faceId);"),
+    Mutant("M9 sparse clear scan inverted", "src/DepthPyramid.cpp",
+           "if (row[x] == kClearKey) {",
+           "if (row[x] != kClearKey) {"),
+    Mutant("M10 parents never lowered (conservative)", "src/DepthPyramid.cpp",
+           "    if (node == m) return;\n    node = m;",
+           "    if (node >= m) return;\n    node = m;"),
+    Mutant("M11 parent ignores right child", "src/DepthPyramid.cpp",
+           "const int cx1 = std::min(cx0 + 1, cw - 1)",
+           "const int cx1 = cx0"),
+    Mutant("M12 tile rescan result not propagated", "src/DepthPyramid.cpp",
+           "  levels_[0][t] = best;\n  propagate(tx, ty);",
+           "  levels_[0][t] = best;"),
+    Mutant("M13 texture v not flipped", "src/Shader.cpp",
+           "y = (1.0 - v) * t.rows - 0.5;",
+           "y = v * t.rows - 0.5;"),
+    Mutant("M14 texel centres off by half", "src/Shader.cpp",
+           "const double x = u * t.cols - 0.5,",
+           "const double x = u * t.cols,"),
+    Mutant("M16 triangle test key by id+1", "include/zrender/HierarchicalAlgorithm.hpp",
+           "makeDepthKey(nearestDepth, faceId)))",
+           "makeDepthKey(nearestDepth, faceId + 1)))",
+           equivalent='a larger key ties only with samples of the same face, which it cannot change'),
+    Mutant("M17 specular exponent 32", "src/Shader.cpp",
+           "std::pow(diffuse, 64.0)",
+           "std::pow(diffuse, 32.0)"),
+    Mutant("M18 bilinear weights swapped", "src/Shader.cpp",
+           "const double top = a[2 - i] * (1 - fx) + b[2 - i] * fx;",
+           "const double top = a[2 - i] * fx + b[2 - i] * (1 - fx);"),
+    Mutant("M20 interval no error margin", "src/IntervalAlgorithm.cpp",
+           "const double threshold = 2.0 * (winBound + bound(c));",
+           "const double threshold = 0.0 * (winBound + bound(c));"),
+    Mutant("M21 interval run past crossing", "src/IntervalAlgorithm.cpp",
+           "std::floor(crossing) - 1.0;",
+           "std::floor(crossing) + 1.0;"),
+    Mutant("M22 interval same plane larger id", "src/IntervalAlgorithm.cpp",
+           "samePlane(*c.plane, *win.plane) && win.id < c.id",
+           "samePlane(*c.plane, *win.plane) && win.id > c.id",
+           equivalent='the winner has the least key at the left end, so with the same plane it has the smaller id; the guard only saves work'),
+    Mutant("M23 ambient 0.2", "src/Shader.cpp",
+           "const double ambient = 0.1;",
+           "const double ambient = 0.2;"),
+    Mutant("M24 texture clamps instead of wrapping", "src/Shader.cpp",
+           "xi = ((xi % t.cols) + t.cols) % t.cols;",
+           "xi = std::clamp(xi, 0, t.cols - 1);"),
+    Mutant("M25 msaa mean truncated", "src/Shader.cpp",
+           "uchar((sum[i] + 2) / 4)",
+           "uchar(sum[i] / 4)"),
+    Mutant("M26 near clip plane moved", "src/Clipping.cpp",
+           "[](const Vec4& p) { return p[2] + p[3]; }",
+           "[](const Vec4& p) { return p[2] + 0.99 * p[3]; }"),
+    Mutant("M28 turntable turns the other way", "src/Camera.cpp",
+           "rotation(degrees, camera.up)",
+           "rotation(-degrees, camera.up)"),
+    Mutant("M29 fit margin 10%", "src/Transforms.cpp",
+           "radius * 1.05;",
+           "radius * 1.10;"),
+    Mutant("M30 fit uses the larger half-angle", "src/Transforms.cpp",
+           "std::sin(std::min(halfY, halfX))",
+           "std::sin(std::max(halfY, halfX))"),
+    Mutant("M31 grid y offset not centred", "src/Scene.cpp",
+           "(j - (g.count[1] - 1) / 2.0) * g.spacing[1]",
+           "(j - (g.count[1] - 1) / 2) * g.spacing[1]"),
+    Mutant("M35 16-bit depth truncated", "src/ImageOutput.cpp",
+           "uint16_t(std::lround(double(d) * 65535.0))",
+           "uint16_t(double(d) * 65535.0)"),
+    Mutant("M32 aspect setting ignored", "src/Camera.cpp",
+           "cam.aspect = s.aspect > 0.0 ? s.aspect :",
+           "cam.aspect = s.aspect > 1e300 ? s.aspect :"),
+    Mutant("M33 default width 1000", "include/zrender/Settings.hpp",
+           "int width = 1024; ",
+           "int width = 1000; "),
+    Mutant("M34 negative index off by one", "src/ObjLoader.cpp",
+           "if (index < 0) return static_cast<int32_t>(static_cast<int64_t>(count) + index);",
+           "if (index < 0) return static_cast<int32_t>(static_cast<int64_t>(count) + index + 1);"),
+    Mutant("M36 ear test ignores points on the edge", "src/Triangulation.cpp",
+           "if (insideOrOn(a, pts[ic], c, pts[q])) ear = false;",
+           "if (false) ear = false;"),
+]
+
+
+def run(args, cwd, quiet=True):
+    return subprocess.run(args, cwd=cwd, text=True, capture_output=quiet)
+
+
+def failingTests(ctestOutput):
+    """Names listed under ctest's "The following tests FAILED:" ("  5 - Name (Failed)")."""
+    lines = ctestOutput.splitlines()
+    if "The following tests FAILED:" not in [line.strip() for line in lines]:
+        return []
+    start = [line.strip() for line in lines].index("The following tests FAILED:") + 1
+    return [line.split(" - ", 1)[1].rsplit(" (", 1)[0] for line in lines[start:] if " - " in line]
+
+
+def main():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    wanted = set(sys.argv[1:])
+    chosen = [m for m in MUTANTS if not wanted or m.name.split()[0] in wanted]
+    work = tempfile.mkdtemp(prefix="zrender-mutants-")
+    tree = os.path.join(work, "main")
+    run(["git", "worktree", "add", "--detach", tree, "HEAD"], root)
+    try:
+        shared = os.path.join(os.path.dirname(root), "shared", "models")
+        os.makedirs(os.path.join(tree, "models"), exist_ok=True)
+        for model in ("bunny", "spot", "teapot"):
+            os.symlink(os.path.join(shared, model), os.path.join(tree, "models", model))
+        build = os.path.join(tree, "build")
+        run(["cmake", "-S", tree, "-B", build, "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release"], tree)
+        if run(["ninja", "-C", build], tree).returncode:
+            sys.exit("mutants: the unchanged project does not build")
+        if run(["ctest", "-j2"], build).returncode:
+            sys.exit("mutants: the unchanged project fails its tests")
+        survivors = 0
+        for m in chosen:
+            path = os.path.join(tree, m.path)
+            with open(path) as f:
+                text = f.read()
+            if text.count(m.old) != 1:
+                print(f"{m.name}: the text to change occurs {text.count(m.old)} times", flush=True)
+                survivors += 1
+                continue
+            with open(path, "w") as f:
+                f.write(text.replace(m.old, m.new))
+            try:
+                if run(["ninja", "-C", build], tree).returncode:
+                    print(f"{m.name}: does not compile", flush=True)
+                    continue
+                result = run(["ctest", "-j2", "--timeout", "300"], build)
+                failed = failingTests(result.stdout)
+                if result.returncode:
+                    shown = ", ".join(failed[:3]) + (", ..." if len(failed) > 3 else "")
+                    print(f"{m.name}: killed by {len(failed)} tests ({shown})", flush=True)
+                elif m.equivalent:
+                    print(f"{m.name}: survived, equivalent: {m.equivalent}", flush=True)
+                else:
+                    print(f"{m.name}: SURVIVED", flush=True)
+                    survivors += 1
+            finally:
+                with open(path, "w") as f:
+                    f.write(text)
+        print(f"mutants: {len(chosen)} run, {survivors} not killed and not equivalent")
+        sys.exit(1 if survivors else 0)
+    finally:
+        run(["git", "worktree", "remove", "--force", tree], root)
+        shutil.rmtree(work, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
