@@ -850,6 +850,24 @@ TEST(OctreeTest, LeafSizeBoundsEveryLeaf) {
   EXPECT_GT(small.size(), 4 * big.size());
 }
 
+// Faces 0 and 1 of `scene` (a wall) drawn into a fresh buffer and its z-pyramid.
+struct WallPyramid {
+  FrameBuffer fb;
+  HzbRasterizer r;
+  WallPyramid(const Scene& scene, const Camera& camera) {
+    FaceTransformer transformer(scene, camera, 1, false);
+    FrameGeometry wall;
+    transformer.transformFace(0, wall);
+    transformer.transformFace(1, wall);
+    fb.resize(wall.width, wall.height);
+    r.begin(fb);
+    RenderStats stats;
+    for (const ScreenTriangle& t : wall.triangles) r.drawTriangle(t, stats);
+  }
+  WallPyramid(const WallPyramid&) = delete;  // r points into fb
+  WallPyramid& operator=(const WallPyramid&) = delete;
+};
+
 TEST(OctreeTest, HiddenNodesHoldNoVisibleFace) {
   // A wall (faces 0, 1) with clusters of small triangles just in front of and just behind it,
   // and more far behind. Against a pyramid of the wall alone, every node the test calls
@@ -878,23 +896,14 @@ TEST(OctreeTest, HiddenNodesHoldNoVisibleFace) {
       shown[keyFaceId(ref.buffer.data()[i])] = true;
 
   const Camera camera = makeCamera(scene);
-  FaceTransformer transformer(scene, camera, 1, false);
-  FrameGeometry wall;
-  transformer.transformFace(0, wall);
-  transformer.transformFace(1, wall);
-  FrameBuffer fb;
-  fb.resize(wall.width, wall.height);
-  HzbRasterizer r;
-  r.begin(fb);
-  RenderStats stats;
-  for (const ScreenTriangle& t : wall.triangles) r.drawTriangle(t, stats);
+  const WallPyramid wall(scene, camera);
 
   Octree tree;
   tree.build(scene);
-  const OctreeNodeTest test(camera, fb.width(), fb.height());
+  const OctreeNodeTest test(camera, wall.fb.width(), wall.fb.height());
   int hiddenNodes = 0, hiddenFaces = 0;
   for (const OctreeNode& node : tree.nodes()) {
-    if (!test.hidden(node, r.pyramid())) continue;
+    if (!test.hidden(node, wall.r.pyramid())) continue;
     ++hiddenNodes;
     for (uint32_t i = node.faceBegin; i < node.faceEnd; ++i) {
       ASSERT_FALSE(shown[tree.faces()[i]]) << "face " << tree.faces()[i] << " is visible";
@@ -916,26 +925,17 @@ TEST(OctreeTest, NodeOnTheOccluderIsNotHidden) {
       s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}),
       warnings);
   const Camera camera = makeCamera(scene);
-  FaceTransformer transformer(scene, camera, 1, false);
-  FrameGeometry wall;
-  transformer.transformFace(0, wall);
-  transformer.transformFace(1, wall);
-  FrameBuffer fb;
-  fb.resize(wall.width, wall.height);
-  HzbRasterizer r;
-  r.begin(fb);
-  RenderStats stats;
-  for (const ScreenTriangle& t : wall.triangles) r.drawTriangle(t, stats);
-  const OctreeNodeTest test(camera, fb.width(), fb.height());
+  const WallPyramid wall(scene, camera);
+  const OctreeNodeTest test(camera, wall.fb.width(), wall.fb.height());
   const auto flatNode = [](float z) {
     OctreeNode node{};
     for (int a = 0; a < 2; ++a) node.lo[a] = -0.5f, node.hi[a] = 0.5f;
     node.lo[2] = node.hi[2] = z;
     return node;
   };
-  EXPECT_FALSE(test.hidden(flatNode(0.0f), r.pyramid()));
-  EXPECT_FALSE(test.hidden(flatNode(1e-5f), r.pyramid()));
-  EXPECT_TRUE(test.hidden(flatNode(-0.01f), r.pyramid()));
+  EXPECT_FALSE(test.hidden(flatNode(0.0f), wall.r.pyramid()));
+  EXPECT_FALSE(test.hidden(flatNode(1e-5f), wall.r.pyramid()));
+  EXPECT_TRUE(test.hidden(flatNode(-0.01f), wall.r.pyramid()));
 }
 
 TEST(OctreeTest, NodeWhoseEdgeSnapsOntoAClearSampleIsNotHidden) {
