@@ -100,11 +100,17 @@ Json::Value rowToJson(const BenchRow& r) {
   return j;
 }
 
-void writeTextAtomically(const fs::path& path, const std::string& text) {
+// A hidden file beside `path` (".NAME.TAG-PID"), after creating the missing parent folders.
+fs::path besideTarget(const fs::path& path, const char* tag) {
   std::error_code ec;
   if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
-  const fs::path tmp =
-      path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  return path.parent_path() /
+         ("." + path.filename().string() + "." + tag + "-" + std::to_string(::getpid()));
+}
+
+void writeTextAtomically(const fs::path& path, const std::string& text) {
+  std::error_code ec;
+  const fs::path tmp = besideTarget(path, "tmp");
   {
     std::ofstream out(tmp, std::ios::binary);
     out << text;
@@ -125,9 +131,7 @@ void writeTextAtomically(const fs::path& path, const std::string& text) {
 // target, removed at once.
 void checkWritable(const fs::path& path) {
   std::error_code ec;
-  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
-  const fs::path probe = path.parent_path() /
-                         ("." + path.filename().string() + ".probe-" + std::to_string(::getpid()));
+  const fs::path probe = besideTarget(path, "probe");
   const bool ok = std::ofstream(probe, std::ios::binary).is_open();
   fs::remove(probe, ec);
   if (!ok) throw InputError(path.string() + ": cannot write file");

@@ -139,17 +139,18 @@ MUTANTS = [
 ]
 
 
-def run(args, cwd, quiet=True):
-    return subprocess.run(args, cwd=cwd, text=True, capture_output=quiet)
+def run(args, cwd):
+    return subprocess.run(args, cwd=cwd, text=True, capture_output=True)
 
 
 def failingTests(ctestOutput):
     """Names listed under ctest's "The following tests FAILED:" ("  5 - Name (Failed)")."""
-    lines = ctestOutput.splitlines()
-    if "The following tests FAILED:" not in [line.strip() for line in lines]:
+    lines = [line.strip() for line in ctestOutput.splitlines()]
+    heading = "The following tests FAILED:"
+    if heading not in lines:
         return []
-    start = [line.strip() for line in lines].index("The following tests FAILED:") + 1
-    return [line.split(" - ", 1)[1].rsplit(" (", 1)[0] for line in lines[start:] if " - " in line]
+    rest = lines[lines.index(heading) + 1:]
+    return [line.split(" - ", 1)[1].rsplit(" (", 1)[0] for line in rest if " - " in line]
 
 
 def main():
@@ -184,6 +185,7 @@ def main():
             try:
                 if run(["ninja", "-C", build], tree).returncode:
                     print(f"{m.name}: does not compile", flush=True)
+                    survivors += 1  # a broken mutant checks nothing
                     continue
                 result = run(["ctest", "-j2", "--timeout", "300"], build)
                 failed = failingTests(result.stdout)
