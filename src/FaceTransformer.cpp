@@ -340,10 +340,10 @@ void FaceTransformer::transformBatch(uint32_t batch, FrameGeometry& out) {
   out.height = height_ * scale_;
   const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t* local = batchCorners_.data() + batchCornerStart_[batch];
-  for (uint32_t i = batchFaceStart_[batch]; i < batchFaceStart_[batch + 1]; ++i) {
-    const uint32_t faceId = batchFaces_[i];
+  for (uint32_t f = batchFaceStart_[batch]; f < batchFaceStart_[batch + 1]; ++f) {
+    const uint32_t faceId = batchFaces_[f];
     // The stored count spares a division on the face's path (0: too many to store).
-    const uint32_t n = batchFaceCorners_[i] ? batchFaceCorners_[i] : mesh.cornerCount(faceId % nf);
+    const uint32_t n = batchFaceCorners_[f] ? batchFaceCorners_[f] : mesh.cornerCount(faceId % nf);
     appendFaceInline(faceId, FaceCorners{local, 0}, n, out);
     local += n;
   }

@@ -337,7 +337,7 @@ INSTANTIATE_TEST_SUITE_P(
                  {"/proc/zrender-nope/x.png"}},
         BadInput{"BadOption", kSquare, "", {"--frobnicate"}, {"command line", "frobnicate"}},
         BadInput{"MsaaThree", kSquare, "", {"--msaa", "3"}, {"msaa"}}),
-    [](const ::testing::TestParamInfo<BadInput>& info) { return std::string(info.param.name); });
+    [](const ::testing::TestParamInfo<BadInput>& p) { return std::string(p.param.name); });
 
 TEST(CommandLine, SizeOutOfRangeInTheFileNamesTheKey) {
   TempDir dir;

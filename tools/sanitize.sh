@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything with AddressSanitizer and UndefinedBehaviorSanitizer (-DZRENDER_SANITIZE=ON)
 # in its own folder and runs the whole test suite there; any sanitizer report fails its test
-# (the build passes -fno-sanitize-recover=all, so a report aborts the process).
+# (the build passes -fno-sanitize-recover=all, so a report aborts the process). Warnings are
+# errors here (-DZRENDER_WERROR=ON), so CI fails on a new one.
 #   tools/sanitize.sh [CTEST_ARGS...]     e.g. tools/sanitize.sh -R HardFiles
 # Environment: ZRENDER_SANITIZE_BUILD (default build-asan), JOBS (default: processor count).
 set -euo pipefail
@@ -12,7 +13,7 @@ jobs=${JOBS:-$(nproc)}
 
 if [[ ! -f $build/build.ninja ]]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZRENDER_SANITIZE=ON \
-    >/dev/null
+    -DZRENDER_WERROR=ON >/dev/null
 fi
 ninja -C "$build"
 
