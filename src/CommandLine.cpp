@@ -60,13 +60,16 @@ void finishVectors(const VectorOptions& v, SceneOverrides& o) {
   set(v.axis, o.axis);
 }
 
-// Parses argv into `app`'s options. False when help was asked for (and printed); a bad
-// option is an InputError.
+// Parses argv into `app`'s options. False when help or the version was asked for (and
+// printed); a bad option is an InputError.
 bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     out << app.help();
+    return false;
+  } catch (const CLI::CallForVersion& e) {
+    out << e.what() << '\n';
     return false;
   } catch (const CLI::ParseError& e) {
     throw InputError("command line: " + oneLine(e.what()));
@@ -105,6 +108,7 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
       "  zrender SCENE [options]\n  zrender bench [SCENE...] [options]",
       "zrender"};
   RenderOptions options;
+  app.set_version_flag("--version", "zrender " ZRENDER_VERSION);
   app.add_option("scene", options.scene, "a scene of settings.json, or a model file")->required();
   app.add_option("-a,--alg", options.algorithm, "zbuffer scanline interval hierarchical octree");
   app.add_option("-o,--output", options.output, "color image (.png .jpg .bmp .ppm .tif)");

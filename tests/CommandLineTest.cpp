@@ -247,6 +247,15 @@ TEST(CommandLine, HelpExitsZero) {
   EXPECT_NE(r.out.find("--alg"), std::string::npos);
 }
 
+TEST(CommandLine, VersionPrintsTheProjectVersionWithoutAScene) {
+  TempDir dir;
+  const auto r = runZrender({"--version"}, dir.path);
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, std::string("zrender ") + ZRENDER_VERSION + "\n");
+  EXPECT_EQ(r.err, "");
+  EXPECT_TRUE(fs::is_empty(dir.path));
+}
+
 struct BadInput {
   const char* name;
   std::string model;                  // OBJ text
