@@ -100,12 +100,11 @@ Json::Value rowToJson(const BenchRow& r) {
   return j;
 }
 
-// A hidden file beside `path` (".NAME.TAG-PID"), after creating the missing parent folders.
+// pathBeside(path, tag), after creating the missing parent folders.
 fs::path besideTarget(const fs::path& path, const char* tag) {
   std::error_code ec;
   if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
-  return path.parent_path() /
-         ("." + path.filename().string() + "." + tag + "-" + std::to_string(::getpid()));
+  return pathBeside(path, tag);
 }
 
 void writeTextAtomically(const fs::path& path, const std::string& text) {

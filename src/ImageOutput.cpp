@@ -43,6 +43,11 @@ void checkOutputExtension(const std::filesystem::path& path,
                    ")");
 }
 
+std::filesystem::path pathBeside(const std::filesystem::path& target, const char* tag) {
+  return target.parent_path() / ("." + target.stem().string() + "." + tag + "-" +
+                                 std::to_string(::getpid()) + target.extension().string());
+}
+
 void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -51,9 +56,7 @@ void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& imag
     fs::create_directories(parent, ec);
     if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
   }
-  // Same folder (so rename is atomic), same extension (the codec is chosen from it).
-  const fs::path tmp = parent / ("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                                 path.extension().string());
+  const fs::path tmp = pathBeside(path, "tmp");
   std::string reason;
   if (!encodeImageFile(tmp, image, reason)) {
     fs::remove(tmp, ec);

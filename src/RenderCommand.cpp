@@ -132,9 +132,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   if (turntable && isVideo(colorPath)) {
     std::error_code ec;
     if (!colorPath.parent_path().empty()) fs::create_directories(colorPath.parent_path(), ec);
-    videoTmp =
-        colorPath.parent_path() / ("." + colorPath.stem().string() + ".tmp-" +
-                                   std::to_string(::getpid()) + colorPath.extension().string());
+    videoTmp = pathBeside(colorPath, "tmp");
     video = std::make_unique<VideoFile>(videoTmp, settings.width, settings.height, 30.0);
     if (!video->isOpen())
       throw InputError(colorPath.string() + ": cannot open a video writer for this format");

@@ -16,6 +16,11 @@ void checkOutputExtension(const std::filesystem::path& path,
 // The extensions -o accepts.
 std::initializer_list<const char*> colorExtensions();
 
+// The hidden file ".STEM.TAG-PID.EXT" in the folder of `target`, for writing an output
+// completely before renaming it into place: the same folder, so the rename is atomic; the
+// same extension, so a codec chosen from it is the target's.
+std::filesystem::path pathBeside(const std::filesystem::path& target, const char* tag);
+
 // Writes an image completely or not at all: encodes to a temporary file beside the target,
 // then renames it over the target; missing parent folders are created. InputError on failure.
 void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image);
