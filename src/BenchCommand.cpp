@@ -101,15 +101,10 @@ Json::Value rowToJson(const BenchRow& r) {
 }
 
 // pathBeside(path, tag), after creating the missing parent folders.
-fs::path besideTarget(const fs::path& path, const char* tag) {
-  std::error_code ec;
-  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
-  return pathBeside(path, tag);
-}
-
 void writeTextAtomically(const fs::path& path, const std::string& text) {
   std::error_code ec;
-  const fs::path tmp = besideTarget(path, "tmp");
+  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
+  const fs::path tmp = pathBeside(path, "tmp");
   {
     std::ofstream out(tmp, std::ios::binary);
     out << text;
@@ -120,20 +115,10 @@ void writeTextAtomically(const fs::path& path, const std::string& text) {
   }
   fs::rename(tmp, path, ec);
   if (ec) {
-    fs::remove(tmp, ec);
+    std::error_code ignored;  // not ec: its message is the reason given
+    fs::remove(tmp, ignored);
     throw InputError(path.string() + ": cannot write file: " + ec.message());
   }
-}
-
-// A bench can run for minutes; an output that cannot be written should fail before it starts,
-// not after. Creates the missing parent folders (the write would) and a probe file beside the
-// target, removed at once.
-void checkWritable(const fs::path& path) {
-  std::error_code ec;
-  const fs::path probe = besideTarget(path, "probe");
-  const bool ok = std::ofstream(probe, std::ios::binary).is_open();
-  fs::remove(probe, ec);
-  if (!ok) throw InputError(path.string() + ": cannot write file");
 }
 
 }  // namespace
@@ -152,6 +137,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
       algorithms.push_back(a);
   }
   if (options.chart) checkOutputExtension(*options.chart, {".png"}, "chart");
+  // A bench can run for minutes: an output that cannot be written fails before it starts.
   for (const auto& path : {options.markdown, options.json, options.chart})
     if (path) checkWritable(*path);
 

@@ -60,6 +60,15 @@ void finishVectors(const VectorOptions& v, SceneOverrides& o) {
   set(v.axis, o.axis);
 }
 
+// Throws InputError naming `option` unless `name` is one of the algorithms.
+void checkAlgorithm(const std::string& name, const char* option) {
+  try {
+    makeAlgorithm(name);
+  } catch (const InputError& e) {
+    throw InputError("command line: " + std::string(option) + ": " + e.what());
+  }
+}
+
 // Parses argv into `app`'s options. False when help or the version was asked for (and
 // printed); a bad option is an InputError.
 bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
@@ -98,6 +107,7 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
     while (!algs.empty() && start <= algs.size()) {
       const size_t comma = std::min(algs.find(',', start), algs.size());
       options.algorithms.push_back(algs.substr(start, comma - start));
+      checkAlgorithm(options.algorithms.back(), "--algs");
       start = comma + 1;
     }
     return runBench(options, out, err);
@@ -124,6 +134,7 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
   addSceneOptions(app, options.overrides, vectors, options.settings);
   if (!parseArguments(app, argc, argv, out)) return 0;
   finishVectors(vectors, options.overrides);
+  checkAlgorithm(options.algorithm, "--alg");
   return runRender(options, out, err);
 }
 

@@ -1,10 +1,13 @@
 #include "zrender/ImageOutput.hpp"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <system_error>
 
@@ -21,6 +24,13 @@ DepthKey pixelKey(const FrameBuffer& fb, int scale, int x, int y) {
   const DepthKey* r0 = fb.row(2 * y);
   const DepthKey* r1 = fb.row(2 * y + 1);
   return std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]});
+}
+
+// The missing folders above `path`, or InputError naming it.
+void createParentFolders(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path(), ec);
+  if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
 }
 
 }  // namespace
@@ -48,14 +58,23 @@ std::filesystem::path pathBeside(const std::filesystem::path& target, const char
                                  std::to_string(::getpid()) + target.extension().string());
 }
 
+void checkWritable(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  createParentFolders(path);
+  if (fs::is_directory(path, ec))
+    throw InputError(path.string() + ": cannot write file (a folder has that name)");
+  const fs::path probe = pathBeside(path, "probe");
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(path.string() + ": cannot write file: " + std::strerror(errno));
+  ::close(fd);
+  fs::remove(probe, ec);
+}
+
 void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::path parent = path.parent_path();
-  if (!parent.empty()) {
-    fs::create_directories(parent, ec);
-    if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
-  }
+  createParentFolders(path);
   const fs::path tmp = pathBeside(path, "tmp");
   std::string reason;
   if (!encodeImageFile(tmp, image, reason)) {
@@ -64,7 +83,8 @@ void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& imag
   }
   fs::rename(tmp, path, ec);
   if (ec) {
-    fs::remove(tmp, ec);
+    std::error_code ignored;  // not ec: its message is the reason given
+    fs::remove(tmp, ignored);
     throw InputError(path.string() + ": cannot replace file: " + ec.message());
   }
 }

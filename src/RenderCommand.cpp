@@ -114,9 +114,21 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   const double loadMs = nowMs() - loadStart;
   flushWarnings();
 
+  // Every output is checked before the first frame, so that a run that fails writes nothing:
+  // not the color image before a --depth that cannot be written, nor the first frames of a
+  // turntable whose tenth is blocked. After the loading, whose errors are the common ones.
+  const int frames = turntable ? options.turntable : 1;
+  if (turntable && !isVideo(colorPath)) {
+    for (int frame = 0; frame < frames; ++frame)
+      checkWritable(framePath(colorPath.string(), frame));
+  } else {
+    checkWritable(colorPath);
+  }
+  for (const auto& path : {options.depth, options.ids, options.contactSheet})
+    if (path) checkWritable(*path);
+
   Renderer renderer(scene, options.algorithm);
   const Camera baseCamera = makeCamera(scene);
-  const int frames = turntable ? options.turntable : 1;
   const bool tty = isatty(STDERR_FILENO);
 
   // Video frames go to a temporary file renamed at the end: complete or not at all.

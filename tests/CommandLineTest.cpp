@@ -9,8 +9,11 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 #include <set>
+#include <system_error>
 
 #include "TestSupport.hpp"
+#include "zrender/Error.hpp"
+#include "zrender/ImageOutput.hpp"
 #include "zrender/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -336,7 +339,11 @@ INSTANTIATE_TEST_SUITE_P(
                  "",
                  {"--turntable", "2", "-o", "f%5s.png"},
                  {"-o", "one %d", "'f%5s.png'"}},
-        BadInput{"UnknownAlgorithm", kSquare, "", {"--alg", "raytrace"}, {"raytrace", "zbuffer"}},
+        BadInput{"UnknownAlgorithm",
+                 kSquare,
+                 "",
+                 {"--alg", "raytrace"},
+                 {"command line: --alg: unknown algorithm 'raytrace'", "zbuffer"}},
         BadInput{"UnknownShading", kSquare, "", {"--shading", "toon"}, {"toon", "phong"}},
         BadInput{"UnsupportedExtension", kSquare, "", {"-o", "x.gif"}, {"x.gif", ".png"}},
         BadInput{"UnwritableOutput",
@@ -344,6 +351,18 @@ INSTANTIATE_TEST_SUITE_P(
                  "",
                  {"-o", "/proc/zrender-nope/x.png"},
                  {"/proc/zrender-nope/x.png"}},
+        // Outputs are checked before the first one is written: no color image is left
+        // behind by a --depth or --ids that cannot be written (m.obj is a file, not a folder).
+        BadInput{"DepthUnderAFile",
+                 kSquare,
+                 "",
+                 {"-o", "c.png", "--depth", "m.obj/d.png"},
+                 {"m.obj/d.png: cannot create folder: "}},
+        BadInput{"IdsUnderAFile",
+                 kSquare,
+                 "",
+                 {"-o", "c.png", "--ids", "m.obj/i.png"},
+                 {"m.obj/i.png: cannot create folder: "}},
         BadInput{"BadOption", kSquare, "", {"--frobnicate"}, {"command line", "frobnicate"}},
         BadInput{"MsaaThree", kSquare, "", {"--msaa", "3"}, {"msaa"}}),
     [](const ::testing::TestParamInfo<BadInput>& p) { return std::string(p.param.name); });
@@ -429,6 +448,33 @@ TEST(Turntable, PercentSignsAndAWidthInThePattern) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.file("f")), fs::directory_iterator()), 2);
 }
 
+TEST(Turntable, AFrameThatCannotBeWrittenFailsBeforeTheFirstFrame) {
+  // A folder named like frame 2: the run fails before frames 0 and 1 are written.
+  TempDir dir;
+  dir.write("sq.obj", kSquare);
+  dir.write("settings.json", settingsFor("sq.obj"));
+  fs::create_directories(dir.file("f/f2.png"));
+  expectCleanError(runZrender({"sq", "--turntable", "4", "-o", dir.file("f/f%d.png")}, dir.path),
+                   {dir.file("f/f2.png"), "a folder has that name"});
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.file("f")), fs::directory_iterator()), 1);
+}
+
+TEST(CommandLine, AFailedRenameGivesItsReason) {
+  // The target turned into a folder after the checks: the rename fails with the system's
+  // reason (EISDIR), not with that of the clean-up that follows it.
+  TempDir dir;
+  fs::create_directories(dir.file("c.png"));
+  try {
+    writeImageAtomically(dir.file("c.png"), cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              dir.file("c.png") + ": cannot replace file: " +
+                  std::error_code(EISDIR, std::generic_category()).message());
+  }
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 1);
+}
+
 TEST(Bench, AlgsChoosesTheRowsAndNamesAreChecked) {
   TempDir dir;
   dir.write("sq.obj", kSquare);
@@ -441,11 +487,11 @@ TEST(Bench, AlgsChoosesTheRowsAndNamesAreChecked) {
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 6) << r.out;  // title, blank, 2 + 2
 
   expectCleanError(runZrender({"bench", "sq", "--algs", "zbuffer,nope"}, dir.path),
-                   {"unknown algorithm 'nope'", "octree"});
+                   {"command line: --algs: unknown algorithm 'nope'", "octree"});
   // An output that cannot be written fails before the bench runs: no table is printed.
   const auto unwritable = runZrender(
       {"bench", "sq", "--repeat", "1", "--markdown", "/proc/zrender-nope/t.md"}, dir.path);
-  expectCleanError(unwritable, {"/proc/zrender-nope/t.md", "cannot write file"});
+  expectCleanError(unwritable, {"/proc/zrender-nope/t.md: cannot create folder"});
   EXPECT_EQ(unwritable.out, "");
   expectCleanError(runZrender({"bench"}, dir.path),
                    {"settings.json", "no scene has \"bench\": true"});

@@ -21,6 +21,11 @@ std::initializer_list<const char*> colorExtensions();
 // same extension, so a codec chosen from it is the target's.
 std::filesystem::path pathBeside(const std::filesystem::path& target, const char* tag);
 
+// Fails now (InputError) if `path` could not be written later, so that a run that would fail
+// at its end writes nothing: creates the missing parent folders (the write would), refuses a
+// folder in the target's place, and creates a probe file beside the target, removed at once.
+void checkWritable(const std::filesystem::path& path);
+
 // Writes an image completely or not at all: encodes to a temporary file beside the target,
 // then renames it over the target; missing parent folders are created. InputError on failure.
 void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image);
