@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 #include <opencv2/imgproc.hpp>
@@ -176,12 +178,20 @@ bool encodeImageFile(const fs::path& path, const cv::Mat& image, std::string& er
 cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
   // PNG files are recognised by their signature, whatever their name.
   unsigned char signature[8] = {};
-  if (FILE* f = std::fopen(path.c_str(), "rb")) {
-    const size_t n = std::fread(signature, 1, sizeof signature, f);
-    std::fclose(f);
-    if (n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0)
-      return readPng(path, error);
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    error = "cannot be opened (it is a folder)";
+    return {};
   }
+  FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) {  // said here: OpenCV would print a warning of its own on stderr
+    error = std::string("cannot be opened: ") + std::strerror(errno);
+    return {};
+  }
+  const size_t n = std::fread(signature, 1, sizeof signature, f);
+  std::fclose(f);
+  if (n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0)
+    return readPng(path, error);
   cv::Mat out;
   char message[512] = "";
   if (codecPlugin().imread(path.c_str(), 1 /* IMREAD_COLOR */, &out, message, sizeof message))

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "zrender/Error.hpp"
 #include "zrender/ImageCodecs.hpp"
 
 namespace zrender {
@@ -76,6 +77,11 @@ Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
   if (!texturePath.empty()) {
     std::string error;
     scene.texture = decodeColorImage(texturePath, error);
+    // The scene's own `texture` key is a value the user chose: bad input. A material's map_Kd
+    // comes with a model from elsewhere, whose textures often go missing: drawn without.
+    if (scene.texture.empty() && settings.texture)
+      throw InputError(texturePath + ": texture " + error + " (key 'texture' of scene '" +
+                       settings.name + "')");
     if (scene.texture.empty())
       warnings.push_back(texturePath + ": texture " + error + " (ignored)");
   }
