@@ -324,8 +324,11 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
       for (int j = 0; j < 3; ++j)
         sharedRotation_ = sharedRotation_ && mv(i, j) == modelView_[0](i, j);
 
+  // An id image's background is id 0 (SPEC §6), whatever the scene's background color.
   const auto& bg = scene_.settings.background;
-  background_ = (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
+  background_ = mode_ == ShadingMode::Id
+                    ? 0
+                    : (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
 
   // View-space ray through a sample centre: x_view / -z_view = x_ndc / P00.
   rayScaleX_ = 2.0 / fb.width() / camera.projection(0, 0);
@@ -460,6 +463,18 @@ void Shader::shadePixelRows(int endRow) {
       const DepthKey* row = fb.row(y);
       for (int x = 0; x < width; ++x) {
         const uint32_t c = sampleColor(row[x], x, y);
+        out[3 * x + 0] = uchar(c);
+        out[3 * x + 1] = uchar(c >> 8);
+        out[3 * x + 2] = uchar(c >> 16);
+      }
+    } else if (mode_ == ShadingMode::Id) {
+      // A mean of ids is no face's id: an id image holds each pixel's nearest sample, as
+      // --ids does (SPEC §6 over the MSAA mean of §5).
+      const DepthKey* r0 = fb.row(2 * y);
+      const DepthKey* r1 = fb.row(2 * y + 1);
+      for (int x = 0; x < width; ++x) {
+        const uint32_t c = sampleColor(
+            std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}), 2 * x, 2 * y);
         out[3 * x + 0] = uchar(c);
         out[3 * x + 1] = uchar(c >> 8);
         out[3 * x + 2] = uchar(c >> 16);

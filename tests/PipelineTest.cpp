@@ -14,6 +14,7 @@
 #include "TestSupport.hpp"
 #include "zrender/Camera.hpp"
 #include "zrender/HugePageAllocator.hpp"
+#include "zrender/ImageOutput.hpp"
 #include "zrender/RasterRules.hpp"
 #include "zrender/Renderer.hpp"
 #include "zrender/Shader.hpp"
@@ -418,24 +419,30 @@ TEST(Shading, RowsShadedAsTheyBecomeFinalEqualOneShadingAfterTheFrame) {
   }
 }
 
+// Channel c (0 = blue, 1 = green, 2 = red, as in cv::Vec3b) of a packed 0x00RRGGBB color.
+int channel(uint32_t rgb, int c) {
+  return int((rgb >> (8 * c)) & 0xFF);
+}
+
 TEST(Msaa, HalfCoveredPixelIsTheExactMeanOfItsSamples) {
   // A square whose left edge is at world x = -0.75 -> pixel column 2.5: in pixel 2 only the
-  // right column of samples (x = 2.75) is covered. Id shading: id 0 -> color (R=1): the
-  // resolved pixel is round((1 + 1 + 0 + 0) / 4) in red... use a white background instead
-  // so the mean is visible: background (255, 255, 255), face color (1, 0, 0) in RGB.
+  // right column of samples (x = 2.75) is covered, two samples of the face's random color and
+  // two of the white background.
   auto mesh =
       test::makeMesh({{-0.75, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-0.75, 1, 0}}, {{0, 1, 2, 3}});
   SceneSettings s = test::tinySettings(8);
-  s.shading = ShadingMode::Id;
+  s.shading = ShadingMode::Random;
   s.msaa = 4;
   s.background = {255, 255, 255};
   const test::Rendered r = test::render(mesh, s, "zbuffer");
   EXPECT_EQ(r.buffer.width(), 16);  // samples
-  // Two samples (1,0,0) and two (255,255,255): mean = (128, 127.5 -> 128, 127.5 -> 128).
-  // Integer rounding (sum + 2) / 4: R (1+1+255+255+2)/4 = 128, G (0+0+510+2)/4 = 128.
-  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 2), cv::Vec3b(128, 128, 128));
-  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 3), cv::Vec3b(0, 0, 1));        // fully covered
-  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 1), cv::Vec3b(255, 255, 255));  // not covered
+  const uint32_t face = randomFaceColor(0);
+  for (int c = 0; c < 3; ++c) {
+    // The rounded mean, integer (sum + 2) / 4.
+    EXPECT_EQ(r.color.at<cv::Vec3b>(3, 2)[c], (2 * channel(face, c) + 2 * 255 + 2) / 4) << c;
+    EXPECT_EQ(r.color.at<cv::Vec3b>(3, 3)[c], channel(face, c)) << c;  // fully covered
+    EXPECT_EQ(r.color.at<cv::Vec3b>(3, 1)[c], 255) << c;               // not covered
+  }
 }
 
 TEST(Msaa, AdjacentFacesBlendWithoutBackgroundBetweenThem) {
@@ -444,12 +451,43 @@ TEST(Msaa, AdjacentFacesBlendWithoutBackgroundBetweenThem) {
       test::makeMesh({{-1, -1, 0}, {0.25, -1, 0}, {0.25, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {1, 1, 0}},
                      {{0, 1, 2, 3}, {1, 4, 5, 2}});
   SceneSettings s = test::tinySettings(8);
-  s.shading = ShadingMode::Id;  // face 0 -> R 1, face 1 -> R 2
+  s.shading = ShadingMode::Random;
   s.msaa = 4;
   s.background = {255, 255, 255};
   const test::Rendered r = test::render(mesh, s, "zbuffer");
-  // (1 + 1 + 2 + 2 + 2) / 4 = 2 in red, 0 in green and blue: no background leaked in.
-  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 4), cv::Vec3b(0, 0, 2));
+  // The mean of the two faces' colors: no background leaked in.
+  const uint32_t face0 = randomFaceColor(0), face1 = randomFaceColor(1);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_EQ(r.color.at<cv::Vec3b>(3, 4)[c],
+              (2 * channel(face0, c) + 2 * channel(face1, c) + 2) / 4)
+        << c;
+}
+
+TEST(Msaa, IdShadingHoldsTheNearestSampleLikeTheIdImage) {
+  // A mean of ids names no face: with MSAA, id shading gives each pixel its nearest sample's
+  // id + 1 and 0 for background whatever the background color, exactly the --ids image.
+  auto mesh =
+      test::makeMesh({{-0.75, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-0.75, 1, 0}}, {{0, 1, 2, 3}});
+  SceneSettings s = test::tinySettings(8);
+  s.shading = ShadingMode::Id;
+  s.msaa = 4;
+  s.background = {255, 255, 255};
+  const test::Rendered r = test::render(mesh, s, "zbuffer");
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 2), cv::Vec3b(0, 0, 1));  // half covered: face 0
+  EXPECT_EQ(r.color.at<cv::Vec3b>(3, 1), cv::Vec3b(0, 0, 0));  // background
+  // A soup with many ids (G bytes too) and many shared pixels, by every algorithm.
+  auto soup = test::randomSoup(5, 600, false);
+  s = test::tinySettings(64);
+  s.shading = ShadingMode::Id;
+  s.msaa = 4;
+  s.cull = false;
+  s.background = {10, 20, 30};
+  for (const std::string algorithm :
+       {"zbuffer", "scanline", "interval", "hierarchical", "octree"}) {
+    const test::Rendered t = test::render(soup, s, algorithm);
+    const cv::Mat ids = idImage(t.buffer, 2);
+    EXPECT_EQ(cv::countNonZero(cv::Mat(ids != t.color).reshape(1)), 0) << algorithm;
+  }
 }
 
 }  // namespace

@@ -21,7 +21,8 @@ class Shader {
   Shader(const Scene& scene, ShadingMode mode);
 
   // Fills `color` (CV_8UC3, BGR, pixels) from `fb` (samples; sampleScale 2 = MSAA 4, whose
-  // pixel is the rounded mean of its four samples' colors, background included).
+  // pixel is the rounded mean of its four samples' colors, background included; in id mode,
+  // the color of its nearest sample, as idImage()).
   void shade(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color);
 
   // The same in steps, so that rows are colored while their keys are still in cache: begin()
