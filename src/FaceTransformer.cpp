@@ -567,12 +567,6 @@ void FaceTransformer::appendClippedFace(uint32_t faceId, FaceCorners corners, ui
   }
   window_.resize(count);
   for (uint32_t i = 0; i < count; ++i) window_[i] = clipToWindow(poly[i], width_, height_);
-  bool ok = false;
-  const DepthPlane plane = planeOf(window_.data(), count, ok);
-  if (!ok) {
-    counters.degenerate += pieces;
-    return;
-  }
 
   // Keep snapped coordinates in range however far outside the image the face reaches.
   const double guard = kGuardBand / scale_;
@@ -589,6 +583,14 @@ void FaceTransformer::appendClippedFace(uint32_t faceId, FaceCorners corners, ui
       return;
     }
     win = guarded_.data();
+  }
+  // The plane from the corners within the guard band: those of a face reaching 1e155 units
+  // would overflow its normal (their cross product) and lose a face that covers the image.
+  bool ok = false;
+  const DepthPlane plane = planeOf(win, count, ok);
+  if (!ok) {
+    counters.degenerate += pieces;
+    return;
   }
   snapped_.clear();
   for (uint32_t i = 0; i < count; ++i) {

@@ -198,6 +198,28 @@ TEST(TinyScene, HugeCoordinatesFarOutsideTheImageAreSafe) {
           << x << "," << y;
 }
 
+TEST(TinyScene, AFaceOfHugeCoordinatesAroundTheViewCoversItAll) {
+  // A triangle at z = 0 reaching e units every way around the view: every pixel is on it, at
+  // the window depth of the plane (as in DepthIsTheWindowDepthOfThePlane), up to 1e300 units,
+  // where the products of window coordinates overflow a double.
+  const double n = 0.1, f = 10.0, d = 2.0;
+  const double expected = 0.5 * ((f + n) / (f - n) - 2.0 * f * n / ((f - n) * d)) + 0.5;
+  for (double e : {1e7, 1e100, 1e155, 1e200, 1e300}) {
+    auto mesh = test::makeMesh({{-e, -e, 0}, {e, -e, 0}, {0, e, 0}}, {{0, 1, 2}});
+    for (const std::string algorithm :
+         {"zbuffer", "scanline", "interval", "hierarchical", "octree"}) {
+      const test::Rendered r = test::render(mesh, test::tinySettings(8), algorithm);
+      for (int y = 0; y < 8; ++y) {
+        for (int x = 0; x < 8; ++x) {
+          ASSERT_EQ(keyFaceId(r.buffer.row(y)[x]), 0u)
+              << e << " " << algorithm << " " << x << "," << y;
+          EXPECT_NEAR(keyDepth(r.buffer.row(y)[x]), expected, 1e-6) << e << " " << algorithm;
+        }
+      }
+    }
+  }
+}
+
 TEST(TinyScene, TriangleThroughTheEyePlaneMatchesItsPartBeforeTheNearPlane) {
   // The triangle reaches z = 5, behind the eye at z = 2. Clipping at the near plane (view
   // distance 0.1, world z = 1.9) must draw exactly what the part in front of that plane draws
