@@ -35,6 +35,15 @@ std::string settingsFor(const std::string& model, const std::string& extra = "",
          R"(, "eye": [0, 0, 2], "project": [90, 0, 0.1, 10])" + extra + "}}";
 }
 
+// One JSON object parsed from `text` (null, and a test failure naming the text, if it is not).
+Json::Value parseJson(const std::string& text) {
+  Json::Value j;
+  std::string errors;
+  std::unique_ptr<Json::CharReader> reader(Json::CharReaderBuilder().newCharReader());
+  EXPECT_TRUE(reader->parse(text.data(), text.data() + text.size(), &j, &errors)) << text;
+  return j;
+}
+
 // One line on stderr, "zrender: error: ...", containing every piece of `mustName`.
 void expectCleanError(const test::RunResult& r, const std::vector<std::string>& mustName) {
   EXPECT_EQ(r.status, 2) << r.err;
@@ -78,10 +87,8 @@ TEST(CommandLine, JsonHasEveryFieldOfTheSpec) {
   dir.write("settings.json", settingsFor("sq.obj"));
   const auto r = runZrender({"sq", "--json", "--repeat", "3", "-o", dir.file("a.png")}, dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  Json::Value j;
-  std::string errors;
-  std::unique_ptr<Json::CharReader> reader(Json::CharReaderBuilder().newCharReader());
-  ASSERT_TRUE(reader->parse(r.out.data(), r.out.data() + r.out.size(), &j, &errors)) << r.out;
+  const Json::Value j = parseJson(r.out);
+  ASSERT_TRUE(j.isObject());
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
   for (const char* key : {"scene", "algorithm", "width", "height", "msaa", "faces", "triangles",
                           "load_ms", "prepare_ms", "transform_ms", "raster_ms", "raster_ms_min",
@@ -109,10 +116,8 @@ TEST(CommandLine, OneFrameHasFrameEqualToTransformPlusRaster) {
   dir.write("settings.json", settingsFor("sq.obj"));
   const auto r = runZrender({"sq", "--json", "-o", dir.file("a.png")}, dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  Json::Value j;
-  std::string errors;
-  std::unique_ptr<Json::CharReader> reader(Json::CharReaderBuilder().newCharReader());
-  ASSERT_TRUE(reader->parse(r.out.data(), r.out.data() + r.out.size(), &j, &errors)) << r.out;
+  const Json::Value j = parseJson(r.out);
+  ASSERT_TRUE(j.isObject());
   // SPEC §7: frame_ms = transform_ms + raster_ms. The three are printed rounded to 0.001 ms
   // each, so the printed sum may be off by one unit of the last place.
   EXPECT_NEAR(j["frame_ms"].asDouble(), j["transform_ms"].asDouble() + j["raster_ms"].asDouble(),
