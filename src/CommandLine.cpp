@@ -44,7 +44,9 @@ void addSceneOptions(CLI::App& app, SceneOverrides& o, VectorOptions& v,
   app.add_option("--far", o.far, "far plane distance");
   app.add_option("--angle", o.angle, "model rotation, degrees");
   addVector(app, "--axis", v.axis, "model rotation axis");
-  app.add_flag("--fit", o.fit, "frame the model automatically");
+  CLI::Option* fit = app.add_flag("--fit", o.fit, "frame the model automatically");
+  app.add_flag("--no-fit", o.noFit, "a model file: no automatic framing (give --eye)")
+      ->excludes(fit);
   app.add_option("--shading", o.shading, "normal flat phong random texture id depth");
   app.add_option("--msaa", o.msaa, "samples per pixel: 1 or 4");
   app.add_flag("--no-cull", o.noCull, "draw back faces too");
@@ -168,6 +170,7 @@ void applyOverrides(const SceneOverrides& o, SceneSettings& s) {
   if (o.far) s.far = std::abs(*o.far);
   if (o.angle) s.angle = *o.angle;
   if (o.fit) s.fit = true;
+  if (o.noFit) s.fit = false;
   if (o.msaa) s.msaa = *o.msaa;
   if (o.noCull) s.cull = false;
   if (o.shading) {
@@ -234,6 +237,11 @@ SceneSettings resolveScene(const std::string& scene, const std::optional<fs::pat
   if (!found) {
     if (fs::is_regular_file(scene, ec)) {
       result = defaultSceneForModel(scene);
+      // Fit frames the model around what the user typed; --fit frames it on its own.
+      if (!overrides.fit) {
+        result.fitKeeps = FitKeeps{overrides.eye.has_value(), overrides.target.has_value(),
+                                   overrides.near.has_value(), overrides.far.has_value()};
+      }
       where = "command line: scene '" + scene + "'";
     } else if (settingsPath.empty()) {
       throw InputError(scene + ": no such scene or model file (no settings.json found)");

@@ -163,8 +163,10 @@ void checkSize(const std::string& where, const std::string& key, int value) {
   }
 }
 
-void checkProjection(const std::string& where, double fovy, double aspect, double near,
-                     double far) {
+// `nearBeforeFar`: whether far > near is checked here (not when fit supplies one of them, from
+// the model: makeCamera checks it then).
+void checkProjection(const std::string& where, double fovy, double aspect, double near, double far,
+                     bool nearBeforeFar = true) {
   if (!std::isfinite(fovy) || !std::isfinite(aspect) || !std::isfinite(near) ||
       !std::isfinite(far)) {
     failKey(where, "project",
@@ -179,7 +181,7 @@ void checkProjection(const std::string& where, double fovy, double aspect, doubl
   if (!(near > 0.0)) {
     failKey(where, "project", "near must be greater than 0, got " + formatNumber(near));
   }
-  if (!(far > near)) {
+  if (nearBeforeFar && !(far > near)) {
     failKey(where, "project",
             "far must be greater than near, got near " + formatNumber(near) + " and far " +
                 formatNumber(far));
@@ -482,7 +484,12 @@ void validateScene(const SceneSettings& scene, const std::string& sceneWhere,
   };
   checkSize(at("width"), "width", scene.width);
   checkSize(at("height"), "height", scene.height);
-  checkProjection(at("project"), scene.fovy, scene.aspect, scene.near, scene.far);
+  const FitKeeps& keep = scene.fitKeeps;
+  const bool fitNear = scene.fit && !keep.near, fitFar = scene.fit && !keep.far;
+  // With fit, a near or far of the file is checked even though fit replaces it; one the user
+  // gave beside one fit supplies is checked against it in makeCamera.
+  checkProjection(at("project"), scene.fovy, scene.aspect, scene.near, scene.far,
+                  !scene.fit || keep.near == keep.far);
   {
     // Extreme finite values can still overflow the projection (2 far near / (near - far) once
     // far near passes 1e308, 1 / tan of a denormal fovy), and a non-finite camera would draw
@@ -492,7 +499,7 @@ void validateScene(const SceneSettings& scene, const std::string& sceneWhere,
     const double aspect =
         scene.aspect > 0.0 ? scene.aspect : double(scene.width) / double(scene.height);
     const FitView unit = fitView(1.0, scene.fovy, aspect);
-    const double near = scene.fit ? unit.near : scene.near, far = scene.fit ? unit.far : scene.far;
+    const double near = fitNear ? unit.near : scene.near, far = fitFar ? unit.far : scene.far;
     const Mat4 projection = perspective(scene.fovy, aspect, near, far);
     for (int i = 0; i < 16; ++i) {
       if (!std::isfinite(projection.val[i])) {
@@ -529,6 +536,10 @@ void validateScene(const SceneSettings& scene, const std::string& sceneWhere,
   std::string directionName = "the default viewing direction (no eye given) ";
   if (!scene.eye) {
     if (!scene.fit) failKey(at("eye"), "eye", "missing (required unless fit is on)");
+  } else if (scene.fit && keep.eye && !keep.target) {
+    // The target will be the model's centre: makeCamera checks the direction then.
+    checkFinite(at("eye"), "eye", *scene.eye);
+    return;
   } else {
     const cv::Vec3d eye = *scene.eye;
     checkFinite(at("eye"), "eye", eye);

@@ -39,12 +39,25 @@ Mat4 perspective(double fovyDegrees, double aspect, double near, double far) {
               0.0, 0.0, -1.0, 0.0);
 }
 
+namespace {
+constexpr double kFitMargin = 1.05;  // the sphere's radius plus 5%
+}  // namespace
+
 FitView fitView(double radius, double fovyDegrees, double aspect) {
-  const double r = radius * 1.05;  // 5% margin
   const double halfY = fovyDegrees * CV_PI / 360.0;
   const double halfX = std::atan(std::tan(halfY) * aspect);
-  const double distance = r / std::sin(std::min(halfY, halfX));
-  return FitView{distance, std::max(distance - r, distance * 1e-3), distance + r};
+  // At or beyond the margin's radius (the sine is at most 1), so hugSphere's near is
+  // distance - r or distance / 1000.
+  const double distance = radius * kFitMargin / std::sin(std::min(halfY, halfX));
+  return hugSphere(distance, radius);
+}
+
+FitView hugSphere(double centreDepth, double radius) {
+  const double r = radius * kFitMargin;
+  const double near = std::max(centreDepth - r, std::max(centreDepth, r) * 1e-3);
+  // A sphere wholly behind the eye shows nothing; any far beyond near will do.
+  const double far = centreDepth + r > near ? centreDepth + r : 2.0 * near;
+  return FitView{centreDepth, near, far};
 }
 
 Box3 boundingBox(const std::vector<Vec3>& points) {

@@ -16,7 +16,8 @@ struct SceneOverrides {
   std::optional<int> width, height;
   std::optional<Vec3> eye, target, up, axis;
   std::optional<double> fov, aspect, near, far, angle;
-  bool fit = false;
+  bool fit = false;    // --fit: frame the model, moving eye, target, near and far
+  bool noFit = false;  // --no-fit: a model file without fit
   std::optional<std::string> shading;
   std::optional<int> msaa;
   bool noCull = false;

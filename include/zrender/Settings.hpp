@@ -22,6 +22,13 @@ struct Grid {
   int instanceCount() const { return count[0] * count[1] * count[2]; }
 };
 
+// The camera values `fit` leaves as they are. A settings scene's "fit": true and --fit frame
+// the model on their own (SPEC §4: none kept); a model file named on the command line is
+// framed around the camera options the user typed (docs: the camera rule).
+struct FitKeeps {
+  bool eye = false, target = false, near = false, far = false;
+};
+
 // One scene of settings.json with every default of SPEC §3 filled in.
 struct SceneSettings {
   std::string name;
@@ -38,6 +45,7 @@ struct SceneSettings {
   double near = 0.1;    // > 0 (sign of the file's value ignored)
   double far = 100.0;   // > near
   bool fit = false;
+  FitKeeps fitKeeps;  // with fit: what it leaves as given
   ShadingMode shading = ShadingMode::Normal;
   int msaa = 1;  // 1 or 4
   bool cull = true;

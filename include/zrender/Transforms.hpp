@@ -28,6 +28,12 @@ struct FitView {
 };
 FitView fitView(double radius, double fovyDegrees, double aspect);
 
+// Near and far hugging a bounding sphere of `radius` (plus fit's 5% margin) whose centre lies
+// `centreDepth` in front of the eye along the viewing direction (negative: behind). Near stays
+// positive: at least 1/1000 of the larger of centreDepth and the radius, so an eye inside the
+// sphere still gets a usable depth range.
+FitView hugSphere(double centreDepth, double radius);
+
 // Window position of a clip-space point with w > 0, in pixels: x right, y down, row 0 at the
 // top (SPEC §4); z is window depth in 0..1, smaller is nearer.
 // Inline: the transform runs it for every vertex of a frame.
