@@ -27,6 +27,9 @@ void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
       (s.maxX - s.minX >= DepthPyramid::kTileSize || s.maxY - s.minY >= DepthPyramid::kTileSize)) {
     const DepthKey nearest = nearestKeyOver(t.plane, t.id, s.minX, s.minY, s.maxX, s.maxY);
     hidden = nearest > nearestCorner && pyramid_.occludes(s.minX, s.minY, s.maxX, s.maxY, nearest);
+    // A copy of a triangle drawn before (see CoincidentTriangles): only big ones are looked
+    // up, for which the look-up costs far less than the pixels.
+    hidden = hidden || coincident_.hiddenByEarlier(t);
   }
   if (hidden) {
     ++stats.trianglesHzbCulled;

@@ -161,7 +161,9 @@ class Builder {
       node.lo[a] = std::numeric_limits<float>::infinity();
       node.hi[a] = -std::numeric_limits<float>::infinity();
     }
+    node.minFace = UINT32_MAX;
     for (uint32_t c = first; c < child; ++c) {
+      node.minFace = std::min(node.minFace, nodes_[c].minFace);
       for (int a = 0; a < 3; ++a) {
         node.lo[a] = std::min(node.lo[a], nodes_[c].lo[a]);
         node.hi[a] = std::max(node.hi[a], nodes_[c].hi[a]);
@@ -172,8 +174,10 @@ class Builder {
   void leafBounds(uint32_t index) {
     OctreeNode& node = nodes_[index];
     double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    node.minFace = UINT32_MAX;
     for (uint32_t i = node.faceBegin; i < node.faceEnd; ++i) {
       const uint32_t id = faces_[i];
+      node.minFace = std::min(node.minFace, id);
       const uint32_t k = id / facesPerInstance_, f = id % facesPerInstance_;
       const Vec3& offset = offsets_[k];
       const uint32_t n = mesh_.cornerCount(f);

@@ -74,8 +74,8 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
   // corner depths), and the corners lie in the box: below the box's nearest corner by the
   // rounding of the two matrix products only.
   const double low = z0 - 1e-6 * (1.0 + std::abs(z0));
-  // Id 0: the box's key wins every tie, so only a strictly farther sample key rejects.
-  const DepthKey key = keyAtOrBelow(low, 0);
+  // With the node's smallest id, the key is no greater than any key of its faces.
+  const DepthKey key = keyAtOrBelow(low, node.minFace);
   return pyramid.occludes(int(minX), int(minY), int(maxX), int(maxY), key, kNodeQueryNodes);
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "zrender/CoincidentTriangles.hpp"
 #include "zrender/DepthPyramid.hpp"
 #include "zrender/TriangleBands.hpp"
 #include "zrender/TriangleFill.hpp"
@@ -68,6 +69,7 @@ class HzbRasterizer {
   void begin(FrameBuffer& fb) {
     fb_ = &fb;
     pyramid_.begin(fb);
+    coincident_.clear();
   }
   void drawTriangle(const ScreenTriangle& t, RenderStats& stats);
   // Asks the cache for the buffer lines a triangle will read (its bounds' end samples on each
@@ -95,6 +97,7 @@ class HzbRasterizer {
  private:
   FrameBuffer* fb_ = nullptr;
   DepthPyramid pyramid_;
+  CoincidentTriangles coincident_;  // big triangles drawn this frame
   TriangleFillFunction fill_ = triangleFill();
 };
 

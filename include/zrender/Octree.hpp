@@ -7,7 +7,7 @@
 
 namespace zrender {
 
-// One node of the octree (52 bytes). Children are stored contiguously in octant order.
+// One node of the octree (56 bytes). Children are stored contiguously in octant order.
 struct OctreeNode {
   // Bounds of every face below the node, world space (all instances), rounded outward to
   // float and then widened by a relative margin, so that a face is always inside.
@@ -18,6 +18,7 @@ struct OctreeNode {
   uint32_t firstChild;  // index of the first child in Octree::nodes (if childMask != 0)
   uint32_t faceBegin;   // the faces below the node: Octree::faces[faceBegin, faceEnd)
   uint32_t faceEnd;
+  uint32_t minFace;   // the smallest face id below the node: its faces' keys have no smaller id
   uint8_t childMask;  // bit o set when octant o (x | y << 1 | z << 2, 1 = upper half) exists
 };
 

@@ -1,0 +1,216 @@
+// Faces that repeat: a copy of a face with a larger id loses every sample to the original by
+// the tie-break. The hierarchical algorithms reject such copies exactly (CoincidentTriangles),
+// and use the smallest id they know in their bound keys (octree nodes, grid instances).
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "TestSupport.hpp"
+#include "zrender/CoincidentTriangles.hpp"
+#include "zrender/FaceTransformer.hpp"
+#include "zrender/HierarchicalAlgorithm.hpp"
+#include "zrender/Octree.hpp"
+#include "zrender/OctreeAlgorithm.hpp"
+
+namespace zrender {
+namespace {
+
+ScreenTriangle triangle(uint32_t id) {
+  ScreenTriangle t{};
+  t.v[0] = {0, 0};
+  t.v[1] = {40 * kSubpixel, 0};
+  t.v[2] = {0, 30 * kSubpixel};
+  t.id = id;
+  t.plane.a = 1e-3, t.plane.b = -2e-3, t.plane.c = 0.5;
+  t.plane.loBits = int32_t(floatBits(0.45f)), t.plane.hiBits = int32_t(floatBits(0.55f));
+  return t;
+}
+
+TEST(CoincidentTriangles, ACopyLosesToTheSmallestIdSeenWhateverTheOrder) {
+  CoincidentTriangles seen;
+  EXPECT_FALSE(seen.hiddenByEarlier(triangle(7)));
+  EXPECT_TRUE(seen.hiddenByEarlier(triangle(9)));   // 7 wins every tie
+  EXPECT_FALSE(seen.hiddenByEarlier(triangle(3)));  // wins against 7: drawn
+  EXPECT_TRUE(seen.hiddenByEarlier(triangle(5)));   // now loses to 3
+  EXPECT_FALSE(seen.hiddenByEarlier(triangle(3)));  // the same face again (a polygon's piece)
+  seen.clear();                                     // a new frame
+  EXPECT_FALSE(seen.hiddenByEarlier(triangle(9)));
+}
+
+TEST(CoincidentTriangles, AnyDifferenceInCoverageOrDepthIsNotACopy) {
+  // One step of the 1/256 grid on any corner coordinate, or one bit of any plane value: the
+  // samples or their depths may differ, so the later triangle must be drawn.
+  std::vector<ScreenTriangle> variants;
+  for (int corner = 0; corner < 3; ++corner) {
+    ScreenTriangle t = triangle(8);
+    ++t.v[corner].x;
+    variants.push_back(t);
+    t = triangle(8);
+    --t.v[corner].y;
+    variants.push_back(t);
+  }
+  for (double DepthPlane::*value : {&DepthPlane::a, &DepthPlane::b, &DepthPlane::c}) {
+    ScreenTriangle t = triangle(8);
+    t.plane.*value = std::nextafter(t.plane.*value, 1.0);
+    variants.push_back(t);
+  }
+  ScreenTriangle lo = triangle(8), hi = triangle(8);
+  --lo.plane.loBits, ++hi.plane.hiBits;
+  variants.push_back(lo);
+  variants.push_back(hi);
+  for (size_t i = 0; i < variants.size(); ++i) {
+    CoincidentTriangles seen;
+    EXPECT_FALSE(seen.hiddenByEarlier(triangle(1)));
+    EXPECT_FALSE(seen.hiddenByEarlier(variants[i])) << "variant " << i;
+    EXPECT_TRUE(seen.hiddenByEarlier(triangle(2))) << "variant " << i;
+  }
+}
+
+TEST(CoincidentTriangles, KeepsEveryTriangleAsTheTableGrows) {
+  CoincidentTriangles seen;
+  constexpr int kCount = 5000;
+  for (int i = 0; i < kCount; ++i) {
+    ScreenTriangle t = triangle(uint32_t(i));
+    t.v[1].x += i;
+    ASSERT_FALSE(seen.hiddenByEarlier(t)) << i;
+  }
+  for (int i = 0; i < kCount; ++i) {
+    ScreenTriangle t = triangle(uint32_t(kCount + i));
+    t.v[1].x += i;
+    EXPECT_TRUE(seen.hiddenByEarlier(t)) << i;
+  }
+}
+
+TEST(CoincidentFaces, TwoHundredThousandCopiesOfOneTriangle) {
+  // The model: v 0 0 0, v 1 0 0, v 0 1 0 and `f 1 2 3` listed 200,000 times, framed by
+  // fit at 512 x 512. Face 0 takes every sample; the hierarchical algorithms draw it alone and
+  // reject the other 199,999 before any pixel work.
+  constexpr uint32_t kCopies = 200000;
+  const auto mesh = test::makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+                                   std::vector<std::vector<int>>(kCopies, {0, 1, 2}));
+  SceneSettings s = test::tinySettings(512);
+  s.fit = true;
+  s.shading = ShadingMode::Id;
+  Warnings warnings;
+  const Scene scene = makeScene(s, mesh, warnings);
+  const test::Rendered ref = test::render(scene, "zbuffer");
+  EXPECT_EQ(ref.stats.trianglesRasterized, kCopies);
+  // Fit: the sphere (radius sqrt(1/2)) plus 5% fills the 90-degree view, whose height at the
+  // sphere's centre is then 2 x 1.05 sqrt(1/2) / sin 45 = 2.1 units: the triangle's half unit
+  // of area covers 0.5 / 2.1^2 of the 512 x 512 samples.
+  EXPECT_NEAR(double(test::coveredSamples(ref.buffer)), 0.5 / (2.1 * 2.1) * 512 * 512, 300.0);
+  for (size_t i = 0; i < ref.buffer.size(); ++i) {
+    const DepthKey k = ref.buffer.data()[i];
+    ASSERT_TRUE(k == kClearKey || keyFaceId(k) == 0) << "sample " << i;
+  }
+  for (const std::string alg : {"hierarchical", "octree"}) {
+    const test::Rendered r = test::render(scene, alg);
+    test::expectSameFrame(ref, r, alg);
+    EXPECT_EQ(r.stats.trianglesRasterized, 1u) << alg;
+    EXPECT_EQ(r.stats.trianglesHzbCulled, kCopies - 1) << alg;
+    EXPECT_EQ(r.stats.pixelsTested * kCopies, ref.stats.pixelsTested) << alg;
+  }
+}
+
+TEST(CoincidentFaces, AMeshListedTwiceDrawsOnlyItsFirstCopyIdenticallyToTheZBuffer) {
+  // Big random triangles (each at least 32 samples across) that cross one another, then the
+  // same list again. Every algorithm agrees; the hierarchical ones rasterize exactly the
+  // triangles they rasterize for the mesh listed once, since a copy never wins a sample and so
+  // never changes what the pyramid holds when an original is tested.
+  std::mt19937 rng(25);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), radius(0.5, 1.0), depth(-0.5, 0.5);
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> once;
+  for (int i = 0; i < 150; ++i) {
+    const Vec3 c(1.2 * u(rng), 1.2 * u(rng), 0.0);
+    const double r = radius(rng), turn = u(rng) * CV_PI;
+    for (int k = 0; k < 3; ++k) {
+      const double angle = turn + k * 2.0 * CV_PI / 3.0;
+      p.push_back(c + Vec3(r * std::cos(angle), r * std::sin(angle), depth(rng)));
+    }
+    once.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  std::vector<std::vector<int>> twice = once;
+  twice.insert(twice.end(), once.begin(), once.end());
+  SceneSettings s = test::tinySettings(256);
+  s.cull = false;
+  Warnings warnings;
+  const Scene single = makeScene(s, test::makeMesh(p, once), warnings);
+  const Scene doubled = makeScene(s, test::makeMesh(p, twice), warnings);
+  const test::Rendered ref = test::render(doubled, "zbuffer");
+  EXPECT_EQ(test::countDifferences(ref.buffer, test::render(single, "zbuffer").buffer), 0u);
+  for (const std::string alg : {"scanline", "interval", "hierarchical", "octree"}) {
+    const test::Rendered r = test::render(doubled, alg);
+    test::expectSameFrame(ref, r, alg);
+    if (alg == "hierarchical" || alg == "octree") {
+      EXPECT_EQ(r.stats.trianglesRasterized, test::render(single, alg).stats.trianglesRasterized)
+          << alg;
+      EXPECT_GE(r.stats.trianglesHzbCulled, once.size()) << alg;
+    }
+  }
+}
+
+TEST(CoincidentFaces, OctreeNodesKnowTheirSmallestFaceId) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  for (int i = 0; i < 3000; ++i) {
+    for (int k = 0; k < 3; ++k) p.push_back(Vec3(u(rng), u(rng), u(rng)));
+    f.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  SceneSettings s = test::tinySettings(64);
+  s.grid = Grid{{2, 1, 2}, {3.0, 0.0, 3.0}};
+  Warnings warnings;
+  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  Octree tree;
+  tree.build(scene, 64);
+  ASSERT_GT(tree.nodes().size(), 20u);
+  for (const OctreeNode& node : tree.nodes()) {
+    uint32_t smallest = UINT32_MAX;
+    for (uint32_t i = node.faceBegin; i < node.faceEnd; ++i)
+      smallest = std::min(smallest, tree.faces()[i]);
+    EXPECT_EQ(node.minFace, smallest);
+  }
+}
+
+TEST(CoincidentFaces, TheOctreeNodeTestBreaksADepthTieByTheNodesSmallestId) {
+  // A wall at z = 0 (faces 0 and 1) fills a 64 x 64 pyramid at one window depth, keys of ids 0
+  // and 1. A flat box just behind it, moved back a step at a time: where the box's lowered
+  // nearest depth equals the wall's, a node whose faces all have ids above 1 is hidden and one
+  // holding face 0 is not; nowhere is the second hidden without the first.
+  SceneSettings s = test::tinySettings(64);
+  Warnings warnings;
+  const Scene scene = makeScene(
+      s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}),
+      warnings);
+  const Camera camera = makeCamera(scene);
+  FaceTransformer transformer(scene, camera, 1, false);
+  FrameGeometry wall;
+  transformer.transformFace(0, wall);
+  transformer.transformFace(1, wall);
+  FrameBuffer fb;
+  fb.resize(wall.width, wall.height);
+  HzbRasterizer r;
+  r.begin(fb);
+  RenderStats stats;
+  for (const ScreenTriangle& t : wall.triangles) r.drawTriangle(t, stats);
+  const OctreeNodeTest test(camera, fb.width(), fb.height());
+  int tiesBrokenById = 0;
+  for (int step = 0; step < 4000; ++step) {
+    OctreeNode node{};
+    for (int a = 0; a < 2; ++a) node.lo[a] = -0.5f, node.hi[a] = 0.5f;
+    node.lo[2] = node.hi[2] = -float(step) * 1e-7f;  // window depth: about 1/24 ulp a step
+    node.minFace = 2;
+    const bool hiddenWithLargerIds = test.hidden(node, r.pyramid());
+    node.minFace = 0;
+    const bool hiddenWithFaceZero = test.hidden(node, r.pyramid());
+    EXPECT_TRUE(hiddenWithLargerIds || !hiddenWithFaceZero) << step;
+    tiesBrokenById += hiddenWithLargerIds && !hiddenWithFaceZero;
+  }
+  EXPECT_GT(tiesBrokenById, 0);
+}
+
+}  // namespace
+}  // namespace zrender
