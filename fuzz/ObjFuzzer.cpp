@@ -13,7 +13,7 @@
 #include <string_view>
 
 #include "FuzzSupport.hpp"
-#include "zrender/ObjLoader.hpp"
+#include "zrender/io/ObjLoader.hpp"
 
 namespace {
 

@@ -14,12 +14,12 @@
 #include <memory>
 #include <string>
 
-#include "zrender/Camera.hpp"
-#include "zrender/Renderer.hpp"
-#include "zrender/Scene.hpp"
-#include "zrender/Settings.hpp"
-#include "zrender/Shading.hpp"
-#include "zrender/VisibilityAlgorithm.hpp"
+#include "zrender/io/Settings.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/scene/Camera.hpp"
+#include "zrender/scene/Scene.hpp"
+#include "zrender/scene/ShadingMode.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender::fuzz {
 

@@ -10,7 +10,8 @@
 
 #include "FuzzSupport.hpp"
 #include "RenderCase.hpp"
-#include "zrender/ObjLoader.hpp"
+#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/SceneFiles.hpp"
 
 namespace {
 
@@ -43,7 +44,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fail(std::string("a preset scene does not validate: ") + e.what());
   }
   try {
-    const zrender::Scene scene = zrender::makeScene(input.settings, mesh, warnings);
+    const zrender::Scene scene = zrender::makeScene(
+        input.settings, mesh, zrender::loadTexture(input.settings, *mesh, warnings));
     const std::string difference = zrender::fuzz::checkAlgorithmsAgree(scene, input.twice);
     if (!difference.empty()) fail(difference);
   } catch (const zrender::InputError&) {

@@ -10,10 +10,10 @@
 #include <string>
 
 #include "FuzzSupport.hpp"
-#include "zrender/Camera.hpp"
-#include "zrender/Mesh.hpp"
-#include "zrender/Scene.hpp"
-#include "zrender/Settings.hpp"
+#include "zrender/io/Settings.hpp"
+#include "zrender/scene/Camera.hpp"
+#include "zrender/scene/Mesh.hpp"
+#include "zrender/scene/Scene.hpp"
 
 namespace {
 
@@ -46,7 +46,7 @@ void checkCamera(zrender::SceneSettings scene, const std::string& where) {
   scene.grid.reset();
   scene.texture.reset();
   zrender::Warnings warnings;
-  const zrender::Scene built = zrender::makeScene(scene, mesh, warnings);
+  const zrender::Scene built = zrender::makeScene(scene, mesh);
   const zrender::Camera camera = zrender::makeCamera(built);
   if (!finite(camera.view) || !finite(camera.projection)) {
     fail(where + ": validated scene gives a non-finite camera");

@@ -1,6 +1,6 @@
 #include <iostream>
 
-#include "zrender/CommandLine.hpp"
+#include "zrender/cli/CommandLine.hpp"
 
 int main(int argc, char** argv) {
   return zrender::runCommandLine(argc, argv, std::cout, std::cerr);

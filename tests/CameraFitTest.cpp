@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/CommandLine.hpp"
+#include "zrender/cli/CommandLine.hpp"
 
 namespace zrender {
 namespace {
@@ -89,7 +89,7 @@ TEST(CameraFit, AModelFileKeepsEveryCameraOptionGivenAndFitsTheRest) {
       const SceneSettings s =
           resolveScene(model, std::optional<std::filesystem::path>(settings), o, warnings);
       Warnings sceneWarnings;
-      const Scene scene = makeScene(s, mesh, sceneWarnings);
+      const Scene scene = makeScene(s, mesh);
       const Camera cam = makeCamera(scene);
 
       // The rule: a missing target is the model's centre; a missing eye lies on +Z from the

@@ -7,11 +7,11 @@
 #include <random>
 
 #include "TestSupport.hpp"
-#include "zrender/CoincidentTriangles.hpp"
-#include "zrender/FaceTransformer.hpp"
-#include "zrender/HierarchicalAlgorithm.hpp"
-#include "zrender/Octree.hpp"
-#include "zrender/OctreeAlgorithm.hpp"
+#include "zrender/transform/FaceTransformer.hpp"
+#include "zrender/visibility/CoincidentTriangles.hpp"
+#include "zrender/visibility/HierarchicalAlgorithm.hpp"
+#include "zrender/visibility/Octree.hpp"
+#include "zrender/visibility/OctreeAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -93,7 +93,7 @@ TEST(CoincidentFaces, TwoHundredThousandCopiesOfOneTriangle) {
   s.fit = true;
   s.shading = ShadingMode::Id;
   Warnings warnings;
-  const Scene scene = makeScene(s, mesh, warnings);
+  const Scene scene = makeScene(s, mesh);
   const test::Rendered ref = test::render(scene, "zbuffer");
   EXPECT_EQ(ref.stats.trianglesRasterized, kCopies);
   // Fit: the sphere (radius sqrt(1/2)) plus 5% fills the 90-degree view, whose height at the
@@ -136,8 +136,8 @@ TEST(CoincidentFaces, AMeshListedTwiceDrawsOnlyItsFirstCopyIdenticallyToTheZBuff
   SceneSettings s = test::tinySettings(256);
   s.cull = false;
   Warnings warnings;
-  const Scene single = makeScene(s, test::makeMesh(p, once), warnings);
-  const Scene doubled = makeScene(s, test::makeMesh(p, twice), warnings);
+  const Scene single = makeScene(s, test::makeMesh(p, once));
+  const Scene doubled = makeScene(s, test::makeMesh(p, twice));
   const test::Rendered ref = test::render(doubled, "zbuffer");
   EXPECT_EQ(test::countDifferences(ref.buffer, test::render(single, "zbuffer").buffer), 0u);
   for (const std::string alg : {"scanline", "interval", "hierarchical", "octree"}) {
@@ -163,7 +163,7 @@ TEST(CoincidentFaces, OctreeNodesKnowTheirSmallestFaceId) {
   SceneSettings s = test::tinySettings(64);
   s.grid = Grid{{2, 1, 2}, {3.0, 0.0, 3.0}};
   Warnings warnings;
-  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const Scene scene = makeScene(s, test::makeMesh(p, f));
   Octree tree;
   tree.build(scene, 64);
   ASSERT_GT(tree.nodes().size(), 20u);
@@ -183,8 +183,7 @@ TEST(CoincidentFaces, TheOctreeNodeTestBreaksADepthTieByTheNodesSmallestId) {
   SceneSettings s = test::tinySettings(64);
   Warnings warnings;
   const Scene scene = makeScene(
-      s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}),
-      warnings);
+      s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}));
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, false);
   FrameGeometry wall;

@@ -12,9 +12,9 @@
 #include <system_error>
 
 #include "TestSupport.hpp"
-#include "zrender/Error.hpp"
-#include "zrender/ImageOutput.hpp"
-#include "zrender/VisibilityAlgorithm.hpp"
+#include "zrender/base/Error.hpp"
+#include "zrender/io/ImageOutput.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
 namespace {

@@ -3,9 +3,9 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/CullingBound.hpp"
-#include "zrender/OctreeAlgorithm.hpp"
-#include "zrender/Renderer.hpp"
+#include "zrender/measure/CullingBound.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/visibility/OctreeAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -25,7 +25,7 @@ Scene threeSquares() {
   square(1.0, 0.0, p, f);
   square(0.25, 0.25, p, f);
   Warnings warnings;
-  return makeScene(test::tinySettings(32), test::makeMesh(p, f), warnings);
+  return makeScene(test::tinySettings(32), test::makeMesh(p, f));
 }
 
 bool showsFace(const FrameBuffer& fb, uint32_t face) {
@@ -67,7 +67,7 @@ TEST(CullingBound, OnTheBunnyPerfectLeafCullingDrawsFewerLeavesAndTheSameBuffers
   SceneSettings settings = test::projectScene("bunny");
   settings.width = settings.height = 160;
   Warnings warnings;
-  const Scene scene = makeScene(settings, mesh, warnings);
+  const Scene scene = makeScene(settings, mesh);
   const CullingBound b = measureCullingBound(scene, makeCamera(scene), 1);
   EXPECT_TRUE(b.identical);
   EXPECT_TRUE(b.leafBoundIdentical);

@@ -20,8 +20,8 @@
 
 #include "../fuzz/RenderCase.hpp"
 #include "TestSupport.hpp"
-#include "zrender/ObjLoader.hpp"
-#include "zrender/VisibilityAlgorithm.hpp"
+#include "zrender/io/ObjLoader.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -686,7 +686,7 @@ TEST(HardOutput, ExistingOutputIsReplacedOnlyByACompleteFile) {
 test::Rendered expectAgreement(const std::string& obj, const SceneSettings& settings) {
   Warnings warnings;
   auto mesh = std::make_shared<const Mesh>(loadObjFromText(obj, "case.obj", warnings));
-  const Scene scene = makeScene(settings, mesh, warnings);
+  const Scene scene = makeScene(settings, mesh);
   EXPECT_EQ(fuzz::checkAlgorithmsAgree(scene, true), "");
   return test::render(scene, "zbuffer");
 }
@@ -839,7 +839,7 @@ TEST(FuzzCorpus, RenderInputsAgreeAcrossAlgorithms) {
     } catch (const InputError&) {
       continue;
     }
-    const Scene scene = makeScene(input.settings, mesh, warnings);
+    const Scene scene = makeScene(input.settings, mesh);
     EXPECT_EQ(fuzz::checkAlgorithmsAgree(scene, input.twice), "");
     ++files;
   }

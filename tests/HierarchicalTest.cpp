@@ -16,14 +16,14 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/CpuFeatures.hpp"
-#include "zrender/DepthPyramid.hpp"
-#include "zrender/FaceTransformer.hpp"
-#include "zrender/HierarchicalAlgorithm.hpp"
-#include "zrender/Octree.hpp"
-#include "zrender/OctreeAlgorithm.hpp"
-#include "zrender/Renderer.hpp"
-#include "zrender/VisibilityAlgorithm.hpp"
+#include "zrender/base/CpuFeatures.hpp"
+#include "zrender/raster/DepthPyramid.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/transform/FaceTransformer.hpp"
+#include "zrender/visibility/HierarchicalAlgorithm.hpp"
+#include "zrender/visibility/Octree.hpp"
+#include "zrender/visibility/OctreeAlgorithm.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -53,7 +53,7 @@ Compared expectSameAsZBuffer(const Scene& scene, const std::string& what) {
 Compared expectSameAsZBuffer(std::shared_ptr<const Mesh> mesh, const SceneSettings& settings,
                              const std::string& what) {
   Warnings warnings;
-  const Scene scene = makeScene(settings, std::move(mesh), warnings);
+  const Scene scene = makeScene(settings, std::move(mesh));
   return expectSameAsZBuffer(scene, what);
 }
 
@@ -419,7 +419,7 @@ Scene floorGridScene(SceneSettings& s) {
   s = test::tinySettings(90);
   s.grid = Grid{{3, 1, 2}, {4.0, 0.0, 5.0}};
   Warnings warnings;
-  return makeScene(s, test::makeMesh(p, f), warnings);
+  return makeScene(s, test::makeMesh(p, f));
 }
 
 // The camera of floorGridScene()'s settings `s`, seen from `eye`.
@@ -427,7 +427,7 @@ Camera floorGridCamera(const SceneSettings& s, const Scene& scene, const Vec3& e
   SceneSettings view = s;
   view.eye = eye;
   Warnings warnings;
-  return makeCamera(makeScene(view, scene.mesh, warnings));
+  return makeCamera(makeScene(view, scene.mesh));
 }
 
 TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
@@ -525,7 +525,7 @@ TEST(FaceTransformerTest, InstancesWhollyOutsideTheViewAreOnlyCounted) {
   for (const Case& c : cases) {
     SceneSettings s = test::tinySettings(64);
     s.grid = c.grid;
-    const Scene scene = makeScene(s, mesh, warnings);
+    const Scene scene = makeScene(s, mesh);
     const Camera camera = makeCamera(scene);
     const uint32_t nf = uint32_t(scene.mesh->faceCount());
     FaceTransformer byFace(scene, camera, 1, true), byInstance(scene, camera, 1, true);
@@ -562,7 +562,7 @@ TEST(FaceTransformerTest, InstanceNearestDepthBoundsEveryFaceTightly) {
       s.axis = Vec3(1.0, 1.0, 0.0);
       s.eye = eye;
       s.far = 50.0;
-      const Scene scene = makeScene(s, mesh, warnings);
+      const Scene scene = makeScene(s, mesh);
       const Camera camera = makeCamera(scene);
       const uint32_t nf = uint32_t(scene.mesh->faceCount());
       FaceTransformer t(scene, camera, 1, false);
@@ -649,7 +649,7 @@ TEST(FaceTransformerTest, FacesInHiddenTilesAreDroppedBeforeTheirDepths) {
   s.grid = Grid{{3, 2, 1}, {1.2, 1.2, 0.0}};
   s.eye = Vec3(0.0, 0.0, 2.5);
   Warnings warnings;
-  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const Scene scene = makeScene(s, test::makeMesh(p, f));
   LeftHalfFilter filter;
   FrameGeometry expected, actual;
   transformWithAndWithout(scene, filter, expected, actual);
@@ -693,7 +693,7 @@ TEST(FaceTransformerTest, TrianglesCoveringNoSampleCentreAreDroppedBeforeTheirPl
   const std::vector<std::vector<int>> f = {{0, 1, 2}, {3, 4, 5}};
   const SceneSettings s = test::tinySettings(8);
   Warnings warnings;
-  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const Scene scene = makeScene(s, test::makeMesh(p, f));
   FaceTransformer transformer(scene, makeCamera(scene), 1, true);
   FrameGeometry g;
   transformer.transformInstance(0, g);
@@ -789,7 +789,7 @@ TEST(OctreeTest, EveryFaceOnceAndInsideItsNodes) {
   s.axis = Vec3(1, 2, 3);
   s.grid = Grid{{3, 1, 1}, Vec3(2.5, 0, 0)};
   Warnings warnings;
-  const Scene scene = makeScene(s, test::randomSoup(11, 700, false), warnings);
+  const Scene scene = makeScene(s, test::randomSoup(11, 700, false));
   Octree tree;
   tree.build(scene);
   ASSERT_FALSE(tree.empty());
@@ -835,7 +835,7 @@ TEST(OctreeTest, LeafSizeBoundsEveryLeaf) {
   // Leaves hold at most the faces asked for; smaller leaves make more of them. 700 random
   // faces have distinct centroids, far from kMaxDepth's cells, so the bound is never waived.
   Warnings warnings;
-  const Scene scene = makeScene(test::tinySettings(64), test::randomSoup(12, 700, false), warnings);
+  const Scene scene = makeScene(test::tinySettings(64), test::randomSoup(12, 700, false));
   auto leafSizes = [&scene](uint32_t leafFaces) {
     Octree tree;
     tree.build(scene, leafFaces);
@@ -888,7 +888,7 @@ TEST(OctreeTest, HiddenNodesHoldNoVisibleFace) {
   SceneSettings s = test::tinySettings(512);
   s.cull = false;
   Warnings warnings;
-  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const Scene scene = makeScene(s, test::makeMesh(p, f));
   const test::Rendered ref = test::render(scene, "zbuffer");
   std::vector<bool> shown(scene.faceCount(), false);
   for (size_t i = 0; i < ref.buffer.size(); ++i)
@@ -922,8 +922,7 @@ TEST(OctreeTest, NodeOnTheOccluderIsNotHidden) {
   SceneSettings s = test::tinySettings(64);
   Warnings warnings;
   const Scene scene = makeScene(
-      s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}),
-      warnings);
+      s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}));
   const Camera camera = makeCamera(scene);
   const WallPyramid wall(scene, camera);
   const OctreeNodeTest test(camera, wall.fb.width(), wall.fb.height());
@@ -947,8 +946,7 @@ TEST(OctreeTest, NodeWhoseEdgeSnapsOntoAClearSampleIsNotHidden) {
   // column covered too, it is hidden.
   SceneSettings s = test::tinySettings(64);
   Warnings warnings;
-  const Scene scene =
-      makeScene(s, test::makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}), warnings);
+  const Scene scene = makeScene(s, test::makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
   const Camera camera = makeCamera(scene);
   OctreeNode node{};
   node.lo[0] = float((15.5 / 32.0 - 1.0) * 2.5 + 1e-7);
@@ -1044,7 +1042,7 @@ TEST(HierarchicalExactTest, OctreeOfAnyLeafSize) {
     SceneSettings s = test::tinySettings(96);
     s.cull = false;
     Warnings warnings;
-    const Scene scene = makeScene(s, test::randomSoup(6, 400, true), warnings);
+    const Scene scene = makeScene(s, test::randomSoup(6, 400, true));
     Renderer ref(scene, "zbuffer");
     Renderer octree(scene, std::make_unique<OctreeAlgorithm>(leafFaces));
     ref.renderFrame(makeCamera(scene));
@@ -1193,7 +1191,7 @@ TEST(HierarchicalExactTest, NearestInstanceFirstHidesTheOthersBeforeTheirSetUp) 
   s.eye = Vec3(0.0, 0.0, 1.5);
   s.target = Vec3(0.0, 0.0, 0.0);
   Warnings warnings;
-  const Scene scene = makeScene(s, test::makeMesh(p, f), warnings);
+  const Scene scene = makeScene(s, test::makeMesh(p, f));
   const Compared c = expectSameAsZBuffer(scene, "row of squares");
   const RenderStats& h = c.stats[0];
   EXPECT_GT(c.covered, 4000u);

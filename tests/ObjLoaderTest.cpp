@@ -9,9 +9,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
-#include "zrender/Error.hpp"
-#include "zrender/Mesh.hpp"
-#include "zrender/ObjLoader.hpp"
+#include "zrender/base/Error.hpp"
+#include "zrender/io/ObjLoader.hpp"
+#include "zrender/scene/Mesh.hpp"
 
 namespace zrender {
 namespace {

@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/Camera.hpp"
-#include "zrender/HugePageAllocator.hpp"
-#include "zrender/ImageOutput.hpp"
-#include "zrender/RasterRules.hpp"
-#include "zrender/Renderer.hpp"
-#include "zrender/Shader.hpp"
+#include "zrender/base/HugePageAllocator.hpp"
+#include "zrender/io/ImageOutput.hpp"
+#include "zrender/raster/RasterRules.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/scene/Camera.hpp"
+#include "zrender/shading/Shader.hpp"
 
 namespace zrender {
 namespace {
@@ -117,7 +117,7 @@ TEST(TinyScene, GridInstancesAreCentredOnTheOrigin) {
   SceneSettings s = test::tinySettings(8);
   s.grid = Grid{{2, 2, 2}, {1.0, 2.0, 3.0}};
   Warnings warnings;
-  const Scene scene = makeScene(s, mesh, warnings);
+  const Scene scene = makeScene(s, mesh);
   ASSERT_EQ(scene.instanceCount(), 8u);
   for (uint32_t n = 0; n < 8; ++n) {
     const Vec3 moved = transformPoint(scene.modelMatrix(n), Vec3(0, 0, 0));
@@ -319,7 +319,7 @@ TEST(Shading, TextureIsBilinearWrappedWithVUp) {
   SceneSettings s = test::tinySettings(16);
   s.shading = ShadingMode::Texture;
   Warnings warnings;
-  Scene scene = makeScene(s, mesh, warnings);
+  Scene scene = makeScene(s, mesh);
   scene.texture = cv::Mat(2, 2, CV_8UC3);
   for (int row = 0; row < 2; ++row)
     for (int column = 0; column < 2; ++column)
@@ -426,7 +426,7 @@ TEST(Shading, RowsShadedAsTheyBecomeFinalEqualOneShadingAfterTheFrame) {
         s.msaa = msaa;
         s.cull = false;
         Warnings w;
-        const Scene scene = makeScene(s, mesh, w);
+        const Scene scene = makeScene(s, mesh);
         const Camera camera = makeCamera(scene);
         Renderer renderer(scene, algorithm);
         renderer.renderFrame(camera);

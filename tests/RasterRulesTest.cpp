@@ -12,12 +12,12 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/CpuFeatures.hpp"
-#include "zrender/FrameGeometry.hpp"
-#include "zrender/RasterRules.hpp"
-#include "zrender/TriangleFill.hpp"
-#include "zrender/Triangulation.hpp"
-#include "zrender/ZBufferAlgorithm.hpp"
+#include "zrender/base/CpuFeatures.hpp"
+#include "zrender/raster/FrameGeometry.hpp"
+#include "zrender/raster/RasterRules.hpp"
+#include "zrender/raster/TriangleFill.hpp"
+#include "zrender/transform/Triangulation.hpp"
+#include "zrender/visibility/ZBufferAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -282,7 +282,7 @@ FrameBuffer runZBuffer(FrameGeometry& g) {
   // The z-buffer reads only the geometry; scene, camera and transformer are not touched.
   auto mesh = test::makeMesh({{0, 0, 0}}, {{0}});
   Warnings w;
-  const Scene scene = makeScene(test::tinySettings(g.width), mesh, w);
+  const Scene scene = makeScene(test::tinySettings(g.width), mesh);
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, true);
   FrameInput input{scene, camera, transformer, g};
@@ -337,7 +337,7 @@ TEST(DepthRule, ReversedSubmissionGivesTheSameBuffers) {
   SceneSettings s = test::tinySettings(96);
   s.cull = false;
   Warnings w;
-  const Scene scene = makeScene(s, mesh, w);
+  const Scene scene = makeScene(s, mesh);
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, false);
   FrameGeometry g;
@@ -417,7 +417,7 @@ TEST(DepthRule, TransformSetsTheRangeFromTheCornerDepths) {
   // A triangle from z = 0 to z = 1 seen from z = 2: corner depths at view distances 2 and 1.
   auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {0, 1, 1}}, {{0, 1, 2}});
   Warnings w;
-  const Scene scene = makeScene(test::tinySettings(16), mesh, w);
+  const Scene scene = makeScene(test::tinySettings(16), mesh);
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, true);
   FrameGeometry g;

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/RowOcclusion.hpp"
+#include "zrender/measure/RowOcclusion.hpp"
 
 namespace zrender {
 namespace {
@@ -16,8 +16,7 @@ Scene squareRows(int columns) {
   Warnings warnings;
   return makeScene(settings,
                    test::makeMesh({{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, 0.5, 0}, {-0.5, 0.5, 0}},
-                                  {{0, 1, 2, 3}}),
-                   warnings);
+                                  {{0, 1, 2, 3}}));
 }
 
 TEST(RowOcclusion, NearestRowFirstHidingTheSmallerRowsBehindIt) {

@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/FaceTransformer.hpp"
-#include "zrender/FrameGeometry.hpp"
-#include "zrender/Triangulation.hpp"
-#include "zrender/VisibilityAlgorithm.hpp"
+#include "zrender/raster/FrameGeometry.hpp"
+#include "zrender/transform/FaceTransformer.hpp"
+#include "zrender/transform/Triangulation.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -39,7 +39,7 @@ size_t expectSameAsZBuffer(const Scene& scene, const std::string& what) {
 size_t expectSameAsZBuffer(std::shared_ptr<const Mesh> mesh, const SceneSettings& settings,
                            const std::string& what) {
   Warnings warnings;
-  const Scene scene = makeScene(settings, std::move(mesh), warnings);
+  const Scene scene = makeScene(settings, std::move(mesh));
   return expectSameAsZBuffer(scene, what);
 }
 
@@ -87,9 +87,8 @@ FixedPoint samplePoint(double x, double y) {
 FrameBuffer renderHandMadeFace(const std::vector<FixedPoint>& corners,
                                const std::string& algorithm) {
   Warnings warnings;
-  const Scene scene =
-      makeScene(test::tinySettings(8),
-                test::makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}), warnings);
+  const Scene scene = makeScene(test::tinySettings(8),
+                                test::makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, true);
   FrameGeometry geometry;
@@ -197,7 +196,7 @@ TEST(ScanlineInterval, BunnyNearPlaneAndHalfOutside) {
     s.near = v.near;
     s.cull = v.cull;
     Warnings warnings;
-    const Scene scene = makeScene(s, mesh, warnings);
+    const Scene scene = makeScene(s, mesh);
     // Check the scenario: some vertices in front of the near plane, some behind it.
     const Camera camera = makeCamera(scene);
     double nearest = 1e300, farthest = -1e300;
@@ -325,7 +324,7 @@ TEST(ScanlineInterval, CombCrossesRowsManyTimes) {
   s.cull = false;  // the outline runs clockwise
   EXPECT_GT(expectSameAsZBuffer(test::makeMesh(soup.positions, soup.faces), s, "comb"), 500u);
   Warnings warnings;
-  const Scene scene = makeScene(s, test::makeMesh(soup.positions, soup.faces), warnings);
+  const Scene scene = makeScene(s, test::makeMesh(soup.positions, soup.faces));
   for (const std::string& alg : kAlgorithms) {
     const test::Rendered r = test::render(scene, alg);
     EXPECT_GE(extraCounter(r.stats, "max_active_edges"), 8u) << alg;
@@ -455,7 +454,7 @@ TEST(ScanlineInterval, Counters) {
   SceneSettings s = test::tinySettings(100);
   s.cull = false;
   Warnings warnings;
-  const Scene scene = makeScene(s, test::randomSoup(3, 100, true), warnings);
+  const Scene scene = makeScene(s, test::randomSoup(3, 100, true));
   for (const std::string& alg : kAlgorithms) {
     const test::Rendered r = test::render(scene, alg);
     std::map<std::string, uint64_t> extra(r.stats.extra.begin(), r.stats.extra.end());

@@ -9,9 +9,9 @@
 
 #include <gtest/gtest.h>
 
-#include "zrender/Error.hpp"
-#include "zrender/Settings.hpp"
-#include "zrender/Shading.hpp"
+#include "zrender/base/Error.hpp"
+#include "zrender/io/Settings.hpp"
+#include "zrender/scene/ShadingMode.hpp"
 
 namespace zrender {
 namespace {

@@ -14,7 +14,7 @@
 #include <random>
 #include <sstream>
 
-#include "zrender/ObjLoader.hpp"
+#include "zrender/io/ObjLoader.hpp"
 
 namespace zrender::test {
 
@@ -53,7 +53,7 @@ Rendered render(const Scene& scene, const std::string& algorithm) {
 Rendered render(std::shared_ptr<const Mesh> mesh, const SceneSettings& settings,
                 const std::string& algorithm) {
   Warnings warnings;
-  const Scene scene = makeScene(settings, std::move(mesh), warnings);
+  const Scene scene = makeScene(settings, std::move(mesh));
   return render(scene, algorithm);
 }
 

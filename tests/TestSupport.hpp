@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "zrender/Camera.hpp"
-#include "zrender/FrameBuffer.hpp"
-#include "zrender/Mesh.hpp"
-#include "zrender/Renderer.hpp"
-#include "zrender/Scene.hpp"
-#include "zrender/Settings.hpp"
+#include "zrender/io/Settings.hpp"
+#include "zrender/raster/FrameBuffer.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/scene/Camera.hpp"
+#include "zrender/scene/Mesh.hpp"
+#include "zrender/scene/Scene.hpp"
 
 namespace zrender::test {
 

@@ -11,11 +11,11 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/Camera.hpp"
-#include "zrender/Clipping.hpp"
-#include "zrender/CpuFeatures.hpp"
-#include "zrender/Transforms.hpp"
-#include "zrender/VertexProjection.hpp"
+#include "zrender/base/CpuFeatures.hpp"
+#include "zrender/scene/Camera.hpp"
+#include "zrender/scene/Transforms.hpp"
+#include "zrender/transform/Clipping.hpp"
+#include "zrender/transform/VertexProjection.hpp"
 
 namespace zrender {
 namespace {
@@ -145,7 +145,7 @@ TEST(Camera, FitFramesTheBoundingSphere) {
   s.fit = true;
   s.fovy = 60.0;
   Warnings w;
-  const Scene scene = makeScene(s, mesh, w);
+  const Scene scene = makeScene(s, mesh);
   EXPECT_NEAR(scene.boundsRadius, 1.0, 1e-12);
   const Camera cam = makeCamera(scene);
   EXPECT_NEAR(cam.target[0], 5.0, 1e-12);
@@ -168,7 +168,7 @@ TEST(Camera, FitUsesTheSmallerFieldOfViewOfAWideOrTallImage) {
   for (const auto& [width, height] : std::vector<std::pair<int, int>>{{32, 16}, {16, 32}}) {
     s.width = width, s.height = height;
     Warnings w;
-    const Camera cam = makeCamera(makeScene(s, mesh, w));
+    const Camera cam = makeCamera(makeScene(s, mesh));
     const double horizontal = std::atan(std::tan(half) * width / height);
     const double distance = 1.05 / std::sin(std::min(half, horizontal));
     EXPECT_NEAR(cv::norm(cam.eye - cam.target), distance, 1e-9) << width << " x " << height;
@@ -183,7 +183,7 @@ TEST(Camera, TurntableTurnsTheModelByTheRightHandRuleAboutUp) {
   // shows at (0, 0, -1), and the other way round for a three-quarter turn.
   auto mesh = test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}}, {{0, 1, 2}});
   Warnings w;
-  const Camera cam = makeCamera(makeScene(test::tinySettings(16), mesh, w));
+  const Camera cam = makeCamera(makeScene(test::tinySettings(16), mesh));
   const auto seen = [](const Mat4& view, const Vec3& p) { return transformPoint(view, p); };
   const Vec3 quarter = seen(turntableCamera(cam, 90.0).view, Vec3(1, 0, 0));
   const Vec3 expected = seen(cam.view, Vec3(0, 0, -1));

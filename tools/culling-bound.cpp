@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "zrender/CommandLine.hpp"
-#include "zrender/CullingBound.hpp"
-#include "zrender/Error.hpp"
-#include "zrender/ObjLoader.hpp"
-#include "zrender/RowOcclusion.hpp"
+#include "zrender/base/Error.hpp"
+#include "zrender/cli/CommandLine.hpp"
+#include "zrender/io/SceneFiles.hpp"
+#include "zrender/measure/CullingBound.hpp"
+#include "zrender/measure/RowOcclusion.hpp"
 
 int main(int argc, char** argv) {
   using namespace zrender;
@@ -64,8 +64,7 @@ int main(int argc, char** argv) {
     for (const std::string& name : scenes) {
       Warnings warnings;
       const SceneSettings s = resolveScene(name, settings, overrides, warnings);
-      auto mesh = std::make_shared<const Mesh>(loadObj(s.modelPath, warnings));
-      const Scene scene = makeScene(s, mesh, warnings);
+      const Scene scene = loadScene(s, warnings);
       for (const std::string& w : warnings)
         std::cerr << "zrender-culling-bound: warning: " << w << "\n";
       if (!rowsOnly) {

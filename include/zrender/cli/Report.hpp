@@ -1,0 +1,23 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <json/json.h>
+
+#include "zrender/base/Median.hpp"
+#include "zrender/raster/RenderStats.hpp"
+
+namespace zrender {
+
+// The `stats` object of SPEC §7.
+Json::Value statsToJson(const RenderStats& stats);
+
+// One JSON object on one line, numbers with at most 3 decimals.
+std::string toJsonLine(const Json::Value& value);
+
+// The statistics in words, one line per counter (--stats).
+void printStats(const RenderStats& stats, std::ostream& out);
+
+}  // namespace zrender

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <filesystem>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/raster/FrameBuffer.hpp"
+
+namespace zrender {
+
+// Throws InputError unless `path` ends in one of `allowed` (e.g. {".png", ".tif"}), so that a
+// bad output name fails before any rendering.
+void checkOutputExtension(const std::filesystem::path& path,
+                          std::initializer_list<const char*> allowed, const char* what);
+
+// The extensions -o accepts.
+std::initializer_list<const char*> colorExtensions();
+
+// The hidden file ".STEM.TAG-PID.EXT" in the folder of `target`, for writing an output
+// completely before renaming it into place: the same folder, so the rename is atomic; the
+// same extension, so a codec chosen from it is the target's.
+std::filesystem::path pathBeside(const std::filesystem::path& target, const char* tag);
+
+// Fails now (InputError) if `path` could not be written later, so that a run that would fail
+// at its end writes nothing: creates the missing parent folders (the write would), refuses a
+// folder in the target's place, and creates a probe file beside the target, removed at once.
+void checkWritable(const std::filesystem::path& path);
+
+// Writes an image completely or not at all: encodes to a temporary file beside the target,
+// then renames it over the target; missing parent folders are created. InputError on failure.
+void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image);
+
+// The depth buffer at pixel resolution (with MSAA, each pixel's nearest sample): CV_32FC1 in
+// 0..1 for .tif/.exr, CV_16UC1 round(depth * 65535) for .png (near = dark); background is 1.
+cv::Mat depthImage(const FrameBuffer& fb, int sampleScale, bool sixteenBit);
+
+// Face id + 1 in 24 bits per pixel, R = low byte, G = middle, B = high (SPEC §6), as CV_8UC3
+// BGR; 0 is background. With MSAA, each pixel's nearest sample.
+cv::Mat idImage(const FrameBuffer& fb, int sampleScale);
+
+}  // namespace zrender

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "zrender/base/Error.hpp"
+#include "zrender/scene/Mesh.hpp"
+#include "zrender/scene/Scene.hpp"
+#include "zrender/scene/SceneSettings.hpp"
+
+namespace zrender {
+
+// The scene's diffuse texture (CV_8UC3 BGR): its `texture` key, else the first material's
+// map_Kd; empty when there is none. A `texture` key naming a file that cannot be read is bad
+// input (InputError); a material's map_Kd that cannot be read is a warning, and the model is
+// drawn without it.
+cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings);
+
+// The scene of `settings`: its model file, its texture, its instances. Throws InputError.
+Scene loadScene(const SceneSettings& settings, Warnings& warnings);
+
+}  // namespace zrender

@@ -1,0 +1,45 @@
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include "zrender/base/HugePageAllocator.hpp"
+#include "zrender/raster/RasterRules.hpp"
+
+namespace zrender {
+
+// The visibility result of a frame: one DepthKey (depth and face id) per sample. Color is
+// computed afterwards from it (deferred shading), so all algorithms only have to agree here.
+class FrameBuffer {
+ public:
+  // Keys after the last sample, never part of the image: a pixel loop may read and write back
+  // a few samples past the end of a row (fillTriangleAvx2, fillSpanAvx2), also on the last row.
+  static constexpr size_t kPadding = 4;
+
+  void resize(int width, int height) {
+    width_ = width;
+    height_ = height;
+    keys_.resize(size_t(width) * size_t(height) + kPadding);
+  }
+  void clear() { std::fill(keys_.begin(), keys_.end(), kClearKey); }
+
+  int width() const { return width_; }    // samples
+  int height() const { return height_; }  // samples
+  DepthKey* row(int y) { return keys_.data() + size_t(y) * size_t(width_); }
+  const DepthKey* row(int y) const { return keys_.data() + size_t(y) * size_t(width_); }
+  DepthKey* data() { return keys_.data(); }
+  const DepthKey* data() const { return keys_.data(); }
+  size_t size() const { return size_t(width_) * size_t(height_); }  // samples
+
+  bool operator==(const FrameBuffer& o) const {
+    return width_ == o.width_ && height_ == o.height_ &&
+           std::equal(keys_.begin(), keys_.begin() + std::ptrdiff_t(size()), o.keys_.begin());
+  }
+
+ private:
+  int width_ = 0, height_ = 0;
+  std::vector<DepthKey, HugePageAllocator<DepthKey>> keys_;
+};
+
+}  // namespace zrender

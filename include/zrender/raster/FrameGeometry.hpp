@@ -1,0 +1,55 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "zrender/raster/RasterRules.hpp"
+
+namespace zrender {
+
+// A face after transform, near/far clipping, snapping and culling: a polygon in fixed-point
+// sample coordinates plus its triangulation. All algorithms read the same FrameGeometry.
+struct ScreenFace {
+  uint32_t id;             // face id (SPEC §6)
+  uint32_t firstVertex;    // corners in FrameGeometry::vertices, as projected (either winding)
+  uint32_t vertexCount;    // >= 3
+  uint32_t firstTriangle;  // pieces in FrameGeometry::triangles (at least one), which carry
+  uint32_t triangleCount;  // the face's depth plane
+  bool frontFacing;        // counter-clockwise in NDC
+};
+
+// A triangulation piece of a face, positively oriented (orient2d(v0, v1, v2) > 0). The face's
+// id and depth plane live here so that the pixel loops never look the face up: with the
+// faces in a separate array that look-up was a cache miss per triangle. (The face's plane is
+// its first triangle's; a face record without it is less memory to write per frame.)
+struct ScreenTriangle {
+  FixedPoint v[3];
+  uint32_t face;     // index into FrameGeometry::faces
+  uint32_t id;       // = faces[face].id
+  DepthPlane plane;  // window depth over the face, in sample coordinates
+};
+
+// Per-frame counters of the transform stage (SPEC §7 names in comments).
+struct TransformCounters {
+  uint64_t backfaceCulled = 0;  // triangles_backface_culled (faces, counted in triangles)
+  uint64_t clippedAway = 0;     // triangles_clipped_away: outside near/far or the view
+  uint64_t degenerate = 0;      // zero area after snapping, fewer than 3 corners, non-simple
+  uint64_t filtered = 0;        // dropped by a TriangleFilter's hidden tiles (HiddenTiles)
+};
+
+struct FrameGeometry {
+  int width = 0, height = 0;  // in samples (pixels times 2 with MSAA 4)
+  std::vector<FixedPoint> vertices;
+  std::vector<ScreenFace> faces;
+  std::vector<ScreenTriangle> triangles;
+  TransformCounters counters;
+
+  void clear() {
+    vertices.clear();
+    faces.clear();
+    triangles.clear();
+    counters = TransformCounters();
+  }
+};
+
+}  // namespace zrender

@@ -1,0 +1,74 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/base/Clock.hpp"
+#include "zrender/raster/FrameBuffer.hpp"
+#include "zrender/raster/FrameGeometry.hpp"
+#include "zrender/raster/RenderStats.hpp"
+#include "zrender/scene/Camera.hpp"
+#include "zrender/scene/Scene.hpp"
+#include "zrender/shading/Shader.hpp"
+#include "zrender/transform/FaceTransformer.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+
+// Timings of one frame, milliseconds (SPEC §7).
+struct FrameTimings {
+  double transformMs = 0.0;  // vertices to window-space faces, culling, clipping
+  double rasterMs = 0.0;     // window-space faces to filled buffers (visibility and shading)
+  double frameMs() const { return transformMs + rasterMs; }
+};
+
+// Renders frames of one scene with one algorithm. Model-only work (prepare) happens once in
+// the constructor; buffers are reused from frame to frame.
+class Renderer {
+ public:
+  Renderer(const Scene& scene, const std::string& algorithm);
+  // With an algorithm object built by the caller (measurements: an octree of another leaf size).
+  Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm);
+
+  // Renders one frame; the results stay valid until the next call.
+  FrameTimings renderFrame(const Camera& camera);
+
+  double prepareMs() const { return prepareMs_; }
+  int sampleScale() const { return sampleScale_; }
+  const FrameBuffer& buffer() const { return buffer_; }
+  const cv::Mat& color() const { return color_; }
+  const RenderStats& stats() const { return stats_; }
+  // The faces the last frame transformed and kept (algorithms that cull early keep fewer);
+  // their triangles only where the algorithm keeps them (not the octree: FrameInput).
+  const FrameGeometry& geometry() const { return geometry_; }
+  const VisibilityAlgorithm& algorithm() const { return *algorithm_; }
+  VisibilityAlgorithm& algorithm() { return *algorithm_; }
+  // For measurements (CullingBound): frames draw only the transformed triangles for which
+  // `keep` is true (algorithms that transform all faces first only); empty: all of them.
+  void keepTriangles(std::function<bool(const ScreenTriangle&)> keep) {
+    keepTriangle_ = std::move(keep);
+  }
+
+ private:
+  const Scene& scene_;
+  std::unique_ptr<VisibilityAlgorithm> algorithm_;
+  Shader shader_;
+  int sampleScale_;
+  double prepareMs_ = 0.0;
+  FaceTransformer transformer_;
+  FrameBuffer buffer_;
+  FrameGeometry geometry_;
+  cv::Mat color_;
+  RenderStats stats_;
+  std::function<bool(const ScreenTriangle&)> keepTriangle_;
+};
+
+// Whether two frames agree bit for bit: keys (so depth and face ids) and colors. What
+// `zrender bench` checks every algorithm against the z-buffer with.
+bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuffer& b,
+                     const cv::Mat& colorB);
+
+}  // namespace zrender

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/scene/Mesh.hpp"
+#include "zrender/scene/SceneSettings.hpp"
+#include "zrender/scene/Transforms.hpp"
+
+namespace zrender {
+
+// Everything that depends on the model and the settings but not on the frame: the mesh, its
+// grid instances and the diffuse texture. Built once, shared by all frames and algorithms.
+struct Scene {
+  SceneSettings settings;  // after command-line overrides and validation
+  std::shared_ptr<const Mesh> mesh;
+  std::vector<Vec3> instanceOffsets;  // grid offset of instance k, model units (SPEC §3)
+  cv::Mat texture;                    // CV_8UC3 (BGR) or empty
+  Vec3 boundsCentre{0, 0, 0};         // bounding sphere of all instances after rotation
+  double boundsRadius = 0.0;
+
+  uint32_t instanceCount() const { return uint32_t(instanceOffsets.size()); }
+  uint32_t faceCount() const { return uint32_t(mesh->faceCount()) * instanceCount(); }
+  // Model matrix of instance k: the rotation, then the grid offset.
+  Mat4 modelMatrix(uint32_t instance) const;
+};
+
+// Builds the instances and bounds; `texture` (CV_8UC3 BGR, or empty) is the scene's diffuse
+// texture, as io's loadTexture() reads it.
+Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
+                cv::Mat texture = cv::Mat());
+
+// Number of triangles the faces make once triangulated (n - 2 per face of n >= 3 corners),
+// all instances included.
+uint64_t triangleCount(const Scene& scene);
+
+}  // namespace zrender

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/scene/ShadingMode.hpp"
+
+namespace zrender {
+
+constexpr int kMaxImageSize = 16384;  // pixels, per side (SPEC §2)
+
+// The model repeated as instances (SPEC §3 `grid`).
+struct Grid {
+  std::array<int, 3> count{1, 1, 1};  // nx, ny, nz >= 1
+  cv::Vec3d spacing{0.0, 0.0, 0.0};   // model units
+  int instanceCount() const { return count[0] * count[1] * count[2]; }
+};
+
+// The camera values `fit` leaves as they are. A settings scene's "fit": true and --fit frame
+// the model on their own (SPEC §4: none kept); a model file named on the command line is
+// framed around the camera options the user typed (docs: the camera rule).
+struct FitKeeps {
+  bool eye = false, target = false, near = false, far = false;
+};
+
+// One scene of settings.json with every default of SPEC §3 filled in.
+struct SceneSettings {
+  std::string name;
+  std::filesystem::path modelPath;  // resolved against the settings file's folder
+  int width = 1024;                 // pixels, 1..16384
+  int height = 1024;
+  std::optional<cv::Vec3d> eye;  // world space; required unless fit is on
+  cv::Vec3d target{0.0, 0.0, 0.0};
+  cv::Vec3d up{0.0, 1.0, 0.0};
+  double angle = 0.0;  // degrees about axis
+  cv::Vec3d axis{0.0, 1.0, 0.0};
+  double fovy = 45.0;   // degrees, in (0, 180)
+  double aspect = 0.0;  // <= 0 means width / height
+  double near = 0.1;    // > 0 (sign of the file's value ignored)
+  double far = 100.0;   // > near
+  bool fit = false;
+  FitKeeps fitKeeps;  // with fit: what it leaves as given
+  ShadingMode shading = ShadingMode::Normal;
+  int msaa = 1;  // 1 or 4
+  bool cull = true;
+  std::optional<std::filesystem::path> texture;  // overrides the material's map_Kd
+  std::array<int, 3> background{0, 0, 0};        // r, g, b in 0..255
+  std::optional<Grid> grid;
+  bool bench = false;
+};
+
+}  // namespace zrender

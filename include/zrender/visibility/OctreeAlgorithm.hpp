@@ -1,0 +1,66 @@
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "zrender/visibility/HierarchicalAlgorithm.hpp"
+#include "zrender/visibility/Octree.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+
+// The test of one octree node against the view volume and the z-pyramid, set up once per
+// frame.
+class OctreeNodeTest {
+ public:
+  // `widthSamples` x `heightSamples`: the buffer's size.
+  OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples);
+
+  // Whether every face below the node can be skipped: its box lies wholly outside one plane
+  // of the view volume (the faces are clipped away), or wholly in front of the near plane and
+  // behind the z-pyramid over its screen bounds (widened by a sample for snapping). Exact
+  // because no sample of a face is nearer than the face's nearest corner (DepthPlane clamps to
+  // its corner depths) and the corners lie in the box. A box that reaches the near plane is
+  // never rejected for occlusion. NaN anywhere keeps the node.
+  bool hidden(const OctreeNode& node, const DepthPyramid& pyramid) const;
+
+ private:
+  Mat4 vp_;                // world to clip space
+  double width_, height_;  // samples
+};
+
+// Greene, Kass and Miller's hierarchical z-buffer with an object-space octree: the octree is
+// built once (prepare) over all instances in world space and traversed front to back; a node
+// whose projected box lies behind the z-pyramid (or outside the view volume) is skipped with
+// everything below it. Faces of the other leaves are transformed lazily and their triangles
+// go through the pyramid test of HzbRasterizer.
+class OctreeAlgorithm : public VisibilityAlgorithm {
+ public:
+  // `leafFaces`: the octree's leaf size (Octree::build); other sizes are for measurements.
+  explicit OctreeAlgorithm(uint32_t leafFaces = Octree::kLeafFaces) : leafFaces_(leafFaces) {}
+  std::string name() const override { return "octree"; }
+  void prepare(const Scene& scene) override;
+  bool transformsAll() const override { return false; }
+  const std::vector<uint32_t>* faceOrder() const override { return &octree_.faces(); }
+  // One batch per leaf.
+  const std::vector<uint32_t>* faceBatches() const override { return &batches_; }
+  void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
+
+  const Octree& octree() const { return octree_; }
+
+  // For measurements (CullingBound): a leaf for which `skip` is true, given its global face
+  // ids, is passed over as if the pyramid had hidden it (and counted as culled). Empty: none.
+  using LeafSkip = std::function<bool(const uint32_t* faceIds, uint32_t count)>;
+  void skipLeaves(LeafSkip skip) { skipLeaf_ = std::move(skip); }
+
+ private:
+  uint32_t leafFaces_;
+  Octree octree_;
+  HzbRasterizer rasterizer_;
+  std::vector<uint32_t> stack_;      // nodes still to visit, nearest on top
+  std::vector<uint32_t> batches_;    // leaf boundaries in octree_.faces(), in order
+  std::vector<uint32_t> leafBatch_;  // per node: its batch, for leaves
+  LeafSkip skipLeaf_;
+};
+
+}  // namespace zrender

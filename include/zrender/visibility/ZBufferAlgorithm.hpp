@@ -1,0 +1,21 @@
+#pragma once
+
+#include <vector>
+
+#include "zrender/raster/TriangleBands.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+
+// The classic z-buffer: for each triangle, every sample of its bounding box is tested for
+// coverage and depth. Triangles are visited band by band (TriangleBands) for cache locality.
+class ZBufferAlgorithm : public VisibilityAlgorithm {
+ public:
+  std::string name() const override { return "zbuffer"; }
+  void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
+
+ private:
+  TriangleBands bands_;
+};
+
+}  // namespace zrender

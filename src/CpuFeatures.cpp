@@ -1,9 +1,0 @@
-#include "zrender/CpuFeatures.hpp"
-
-namespace zrender {
-
-bool cpuHasAvx2() {
-  return __builtin_cpu_supports("avx2");
-}
-
-}  // namespace zrender

@@ -1,0 +1,9 @@
+#include "zrender/base/CpuFeatures.hpp"
+
+namespace zrender {
+
+bool cpuHasAvx2() {
+  return __builtin_cpu_supports("avx2");
+}
+
+}  // namespace zrender

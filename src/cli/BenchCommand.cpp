@@ -1,0 +1,244 @@
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/base/Error.hpp"
+#include "zrender/cli/Chart.hpp"
+#include "zrender/cli/CommandLine.hpp"
+#include "zrender/cli/Report.hpp"
+#include "zrender/io/ImageOutput.hpp"
+#include "zrender/io/SceneFiles.hpp"
+#include "zrender/render/Renderer.hpp"
+
+namespace zrender {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct BenchRow {
+  std::string scene, algorithm;
+  int width = 0, height = 0, msaa = 1;
+  uint64_t faces = 0;
+  double prepareMs = 0, transformMs = 0, rasterMs = 0, rasterMinMs = 0, frameMs = 0;
+  double rasterSpeedup = 0, frameSpeedup = 0;
+  RenderStats stats;
+  bool identical = true;
+};
+
+std::string machineName() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("model name", 0) == 0) {
+      const size_t colon = line.find(':');
+      if (colon != std::string::npos) {
+        std::string name = line.substr(colon + 1);
+        name.erase(0, name.find_first_not_of(' '));
+        return name + ", " + std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores";
+      }
+    }
+  }
+  return "unknown machine";
+}
+
+std::string today() {
+  char buf[32];
+  const std::time_t t = std::time(nullptr);
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&t));
+  return buf;
+}
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::string markdownTable(const std::vector<BenchRow>& rows, int repeat) {
+  std::ostringstream md;
+  md << "zrender bench: median of " << repeat << " frames, one thread, " << machineName() << ", "
+     << today() << "\n\n";
+  md << "| scene | size | algorithm | raster ms | frame ms | raster speed-up | frame speed-up | "
+        "prepare ms | triangles culled by HZB | octree nodes culled | identical |\n";
+  md << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for (const BenchRow& r : rows) {
+    md << "| " << r.scene << " | " << r.width << "x" << r.height << (r.msaa == 4 ? " MSAA4" : "")
+       << " | " << r.algorithm << " | " << fixed(r.rasterMs, 2) << " | " << fixed(r.frameMs, 2)
+       << " | " << fixed(r.rasterSpeedup, 2) << "x | " << fixed(r.frameSpeedup, 2) << "x | "
+       << fixed(r.prepareMs, 1) << " | " << r.stats.trianglesHzbCulled << " | "
+       << r.stats.octreeNodesCulled << "/" << r.stats.octreeNodesVisited << " | "
+       << (r.identical ? "yes" : "**NO**") << " |\n";
+  }
+  return md.str();
+}
+
+Json::Value rowToJson(const BenchRow& r) {
+  Json::Value j(Json::objectValue);
+  j["scene"] = r.scene;
+  j["algorithm"] = r.algorithm;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["msaa"] = r.msaa;
+  j["faces"] = Json::UInt64(r.faces);
+  j["prepare_ms"] = r.prepareMs;
+  j["transform_ms"] = r.transformMs;
+  j["raster_ms"] = r.rasterMs;
+  j["raster_ms_min"] = r.rasterMinMs;
+  j["frame_ms"] = r.frameMs;
+  j["raster_speedup"] = r.rasterSpeedup;
+  j["frame_speedup"] = r.frameSpeedup;
+  j["identical"] = r.identical;
+  j["stats"] = statsToJson(r.stats);
+  return j;
+}
+
+// pathBeside(path, tag), after creating the missing parent folders.
+void writeTextAtomically(const fs::path& path, const std::string& text) {
+  std::error_code ec;
+  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
+  const fs::path tmp = pathBeside(path, "tmp");
+  {
+    std::ofstream out(tmp, std::ios::binary);
+    out << text;
+    if (!out) {
+      fs::remove(tmp, ec);
+      throw InputError(path.string() + ": cannot write file");
+    }
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;  // not ec: its message is the reason given
+    fs::remove(tmp, ignored);
+    throw InputError(path.string() + ": cannot write file: " + ec.message());
+  }
+}
+
+}  // namespace
+
+int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
+  Warnings warnings;
+  auto flushWarnings = [&] {
+    for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
+    warnings.clear();
+  };
+  // The z-buffer is the reference every algorithm is compared with, so it always comes first.
+  std::vector<std::string> algorithms = {"zbuffer"};
+  for (const auto& a : options.algorithms.empty() ? algorithmNames() : options.algorithms) {
+    makeAlgorithm(a);  // an unknown name fails before any work
+    if (std::find(algorithms.begin(), algorithms.end(), a) == algorithms.end())
+      algorithms.push_back(a);
+  }
+  if (options.chart) checkOutputExtension(*options.chart, {".png"}, "chart");
+  // A bench can run for minutes: an output that cannot be written fails before it starts.
+  for (const auto& path : {options.markdown, options.json, options.chart})
+    if (path) checkWritable(*path);
+
+  std::vector<std::string> scenes = options.scenes;
+  if (scenes.empty()) {
+    const fs::path path = options.settings ? *options.settings : defaultSettingsPath();
+    if (path.empty()) throw InputError("bench: no settings.json found and no scene given");
+    for (const auto& [name, scene] : loadSettings(path, warnings).scenes)
+      if (scene.bench) scenes.push_back(name);
+    flushWarnings();
+    if (scenes.empty())
+      throw InputError(path.string() + ": no scene has \"bench\": true and no scene was given");
+  }
+
+  const bool tty = isatty(STDERR_FILENO);
+  std::vector<BenchRow> rows;
+  size_t disagreements = 0;
+  for (const std::string& sceneName : scenes) {
+    const SceneSettings settings =
+        resolveScene(sceneName, options.settings, options.overrides, warnings);
+    const Scene scene = loadScene(settings, warnings);
+    flushWarnings();
+    const Camera camera = makeCamera(scene);
+    // Every algorithm is prepared first, then the frames go round the algorithms, so that a
+    // burst of load on the machine falls on all of them alike rather than on one algorithm's
+    // frames, and the ratios of one run stay comparable.
+    std::vector<std::unique_ptr<Renderer>> renderers;
+    renderers.reserve(algorithms.size());
+    for (const std::string& algorithm : algorithms)
+      renderers.push_back(std::make_unique<Renderer>(scene, algorithm));
+    const size_t n = algorithms.size();
+    std::vector<std::vector<double>> transform(n), raster(n), frame(n);
+    for (int i = 0; i < options.repeat; ++i) {
+      if (tty)
+        err << "\rbench: " << sceneName << " round " << (i + 1) << "/" << options.repeat << "   "
+            << std::flush;
+      for (size_t k = 0; k < n; ++k) {
+        const FrameTimings t = renderers[k]->renderFrame(camera);
+        transform[k].push_back(t.transformMs);
+        raster[k].push_back(t.rasterMs);
+        frame[k].push_back(t.frameMs());
+      }
+    }
+    const Renderer& reference = *renderers[0];  // zbuffer
+    const double referenceRaster = median(raster[0]), referenceFrame = median(frame[0]);
+    for (size_t k = 0; k < n; ++k) {
+      const Renderer& renderer = *renderers[k];
+      BenchRow row;
+      row.scene = sceneName;
+      row.algorithm = algorithms[k];
+      row.width = settings.width;
+      row.height = settings.height;
+      row.msaa = settings.msaa;
+      row.faces = scene.faceCount();
+      row.prepareMs = renderer.prepareMs();
+      row.transformMs = median(transform[k]);
+      row.rasterMs = median(raster[k]);
+      row.rasterMinMs = *std::min_element(raster[k].begin(), raster[k].end());
+      row.frameMs = median(frame[k]);
+      row.stats = renderer.stats();
+      if (k > 0)
+        row.identical = identicalFrames(renderer.buffer(), renderer.color(), reference.buffer(),
+                                        reference.color());
+      row.rasterSpeedup = row.rasterMs > 0 ? referenceRaster / row.rasterMs : 0;
+      row.frameSpeedup = row.frameMs > 0 ? referenceFrame / row.frameMs : 0;
+      disagreements += !row.identical;
+      rows.push_back(row);
+    }
+  }
+  if (tty) err << "\r" << std::string(60, ' ') << "\r";
+
+  const std::string table = markdownTable(rows, options.repeat);
+  out << table;
+  if (options.markdown) writeTextAtomically(*options.markdown, table);
+  if (options.json) {
+    Json::Value all(Json::arrayValue);
+    for (const BenchRow& r : rows) all.append(rowToJson(r));
+    Json::StreamWriterBuilder builder;
+    builder["indentation"] = "  ";
+    builder["precision"] = 3;
+    builder["precisionType"] = "decimal";
+    writeTextAtomically(*options.json, Json::writeString(builder, all) + "\n");
+  }
+  if (options.chart) {
+    std::vector<ChartGroup> groups;
+    for (const BenchRow& r : rows) {
+      if (groups.empty() || groups.back().caption.rfind(r.scene, 0) != 0)
+        groups.push_back(ChartGroup{r.scene + " (" + std::to_string(r.width) + "x" +
+                                        std::to_string(r.height) + ", frame ms)",
+                                    {}});
+      groups.back().bars.push_back(ChartBar{r.algorithm, r.frameMs});
+    }
+    writeImageAtomically(
+        *options.chart,
+        drawBarChart("zrender bench: median frame time (ms), lower is better", groups));
+  }
+  err << "bench: " << scenes.size() << " scene(s) x " << algorithms.size() << " algorithm(s): "
+      << (disagreements ? std::to_string(disagreements) + " disagree with zbuffer"
+                        : std::string("all identical to zbuffer"))
+      << "\n";
+  return disagreements ? 1 : 0;
+}
+
+}  // namespace zrender

@@ -1,0 +1,273 @@
+#include "zrender/cli/CommandLine.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+
+#include "zrender/base/Error.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string oneLine(std::string s) {
+  std::replace(s.begin(), s.end(), '\n', ' ');
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+// "x,y,z" options land in a vector; converted after parsing.
+struct VectorOptions {
+  std::vector<double> eye, target, up, axis;
+};
+
+void addVector(CLI::App& app, const char* name, std::vector<double>& v, const char* help) {
+  app.add_option(name, v, help)->delimiter(',')->expected(3)->type_name("X,Y,Z");
+}
+
+void addSceneOptions(CLI::App& app, SceneOverrides& o, VectorOptions& v,
+                     std::optional<fs::path>& settings) {
+  app.add_option("--settings", settings, "settings file (default: ./settings.json)");
+  app.add_option("--width", o.width, "image width in pixels, 1..16384");
+  app.add_option("--height", o.height, "image height in pixels, 1..16384");
+  addVector(app, "--eye", v.eye, "camera position");
+  addVector(app, "--target", v.target, "point looked at");
+  addVector(app, "--up", v.up, "up direction");
+  app.add_option("--fov", o.fov, "vertical field of view, degrees");
+  app.add_option("--aspect", o.aspect, "aspect ratio (0: width/height)");
+  app.add_option("--near", o.near, "near plane distance");
+  app.add_option("--far", o.far, "far plane distance");
+  app.add_option("--angle", o.angle, "model rotation, degrees");
+  addVector(app, "--axis", v.axis, "model rotation axis");
+  CLI::Option* fit = app.add_flag("--fit", o.fit, "frame the model automatically");
+  app.add_flag("--no-fit", o.noFit, "a model file: no automatic framing (give --eye)")
+      ->excludes(fit);
+  app.add_option("--shading", o.shading, "normal flat phong random texture id depth");
+  app.add_option("--msaa", o.msaa, "samples per pixel: 1 or 4");
+  app.add_flag("--no-cull", o.noCull, "draw back faces too");
+}
+
+void finishVectors(const VectorOptions& v, SceneOverrides& o) {
+  auto set = [](const std::vector<double>& in, std::optional<Vec3>& out) {
+    if (in.size() == 3) out = Vec3(in[0], in[1], in[2]);
+  };
+  set(v.eye, o.eye);
+  set(v.target, o.target);
+  set(v.up, o.up);
+  set(v.axis, o.axis);
+}
+
+// Throws InputError naming `option` unless `name` is one of the algorithms.
+void checkAlgorithm(const std::string& name, const char* option) {
+  try {
+    makeAlgorithm(name);
+  } catch (const InputError& e) {
+    throw InputError("command line: " + std::string(option) + ": " + e.what());
+  }
+}
+
+// Parses argv into `app`'s options. False when help or the version was asked for (and
+// printed); a bad option is an InputError.
+bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();
+    return false;
+  } catch (const CLI::CallForVersion& e) {
+    out << e.what() << '\n';
+    return false;
+  } catch (const CLI::ParseError& e) {
+    throw InputError("command line: " + oneLine(e.what()));
+  }
+  return true;
+}
+
+int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
+  const bool bench = argc > 1 && std::strcmp(argv[1], "bench") == 0;
+  VectorOptions vectors;
+  if (bench) {
+    CLI::App app{"Time every algorithm on every scene and check that they agree.", "zrender bench"};
+    BenchOptions options;
+    std::string algs;
+    app.add_option("scenes", options.scenes, "scenes (default: those with \"bench\": true)");
+    app.add_option("--algs", algs, "comma-separated algorithms (default: all)");
+    app.add_option("--repeat", options.repeat, "frames per measurement (median)")
+        ->check(CLI::Range(1, 100000));
+    app.add_option("--markdown", options.markdown, "write the table as markdown");
+    app.add_option("--json", options.json, "write the results as JSON");
+    app.add_option("--chart", options.chart, "write a bar chart (PNG)");
+    addSceneOptions(app, options.overrides, vectors, options.settings);
+    if (!parseArguments(app, argc - 1, argv + 1, out)) return 0;
+    finishVectors(vectors, options.overrides);
+    size_t start = 0;
+    while (!algs.empty() && start <= algs.size()) {
+      const size_t comma = std::min(algs.find(',', start), algs.size());
+      options.algorithms.push_back(algs.substr(start, comma - start));
+      checkAlgorithm(options.algorithms.back(), "--algs");
+      start = comma + 1;
+    }
+    return runBench(options, out, err);
+  }
+
+  CLI::App app{
+      "zrender: render a scene with one of five hidden-surface algorithms.\n"
+      "  zrender SCENE [options]\n  zrender bench [SCENE...] [options]",
+      "zrender"};
+  RenderOptions options;
+  app.set_version_flag("--version", "zrender " ZRENDER_VERSION);
+  app.add_option("scene", options.scene, "a scene of settings.json, or a model file")->required();
+  app.add_option("-a,--alg", options.algorithm, "zbuffer scanline interval hierarchical octree");
+  app.add_option("-o,--output", options.output, "color image (.png .jpg .bmp .ppm .tif)");
+  app.add_option("--depth", options.depth, "depth image (.tif/.exr 32-bit float, .png 16-bit)");
+  app.add_option("--ids", options.ids, "face-id image (.png)");
+  app.add_option("--repeat", options.repeat, "render N times; timings are the median")
+      ->check(CLI::Range(1, 100000));
+  app.add_flag("--json", options.json, "print one JSON object per image on stdout");
+  app.add_flag("--stats", options.stats, "print the culling statistics");
+  app.add_option("--turntable", options.turntable, "N frames turning the model once")
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--contact-sheet", options.contactSheet, "tile turntable frames into one PNG");
+  addSceneOptions(app, options.overrides, vectors, options.settings);
+  if (!parseArguments(app, argc, argv, out)) return 0;
+  finishVectors(vectors, options.overrides);
+  checkAlgorithm(options.algorithm, "--alg");
+  return runRender(options, out, err);
+}
+
+}  // namespace
+
+fs::path defaultSettingsPath() {
+  std::error_code ec;
+  if (fs::is_regular_file("settings.json", ec)) return "settings.json";
+  // The project the executable was built from: build/zrender -> ./settings.json beside build/.
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    for (fs::path dir = exe.parent_path(); !dir.empty() && dir != dir.root_path();
+         dir = dir.parent_path()) {
+      if (fs::is_regular_file(dir / "settings.json", ec) && fs::is_directory(dir / "src", ec))
+        return dir / "settings.json";
+    }
+  }
+  return {};
+}
+
+void applyOverrides(const SceneOverrides& o, SceneSettings& s) {
+  if (o.width) s.width = *o.width;
+  if (o.height) s.height = *o.height;
+  if (o.eye) s.eye = *o.eye;
+  if (o.target) s.target = *o.target;
+  if (o.up) s.up = *o.up;
+  if (o.axis) s.axis = *o.axis;
+  if (o.fov) s.fovy = *o.fov;
+  if (o.aspect) s.aspect = *o.aspect;
+  if (o.near) s.near = std::abs(*o.near);
+  if (o.far) s.far = std::abs(*o.far);
+  if (o.angle) s.angle = *o.angle;
+  if (o.fit) s.fit = true;
+  if (o.noFit) s.fit = false;
+  if (o.msaa) s.msaa = *o.msaa;
+  if (o.noCull) s.cull = false;
+  if (o.shading) {
+    const auto mode = parseShadingMode(*o.shading);
+    if (!mode) {
+      std::string list;
+      for (const auto& n : shadingModeNames()) list += (list.empty() ? "" : ", ") + n;
+      throw InputError("command line: --shading: unknown shading '" + *o.shading +
+                       "' (choose from: " + list + ")");
+    }
+    s.shading = *mode;
+  }
+}
+
+namespace {
+
+// Which of the given options feed each key's rule in validateScene: eye is checked against
+// target, up against the viewing direction target - eye.
+KeyOrigins keyOrigins(const SceneOverrides& o) {
+  KeyOrigins origins;
+  const auto add = [&](const std::string& key, bool given, const char* option) {
+    if (!given) return;
+    std::string& list = origins[key];
+    list += (list.empty() ? "" : ", ") + std::string(option);
+  };
+  add("width", o.width.has_value(), "--width");
+  add("height", o.height.has_value(), "--height");
+  add("project", o.fov.has_value(), "--fov");
+  add("project", o.aspect.has_value(), "--aspect");
+  add("project", o.near.has_value(), "--near");
+  add("project", o.far.has_value(), "--far");
+  add("msaa", o.msaa.has_value(), "--msaa");
+  add("angle", o.angle.has_value(), "--angle");
+  add("axis", o.axis.has_value(), "--axis");
+  add("target", o.target.has_value(), "--target");
+  add("eye", o.eye.has_value(), "--eye");
+  add("eye", o.target.has_value(), "--target");
+  add("up", o.up.has_value(), "--up");
+  add("up", o.eye.has_value(), "--eye");
+  add("up", o.target.has_value(), "--target");
+  return origins;
+}
+
+}  // namespace
+
+SceneSettings resolveScene(const std::string& scene, const std::optional<fs::path>& settingsOption,
+                           const SceneOverrides& overrides, Warnings& warnings) {
+  std::error_code ec;
+  const fs::path settingsPath = settingsOption ? *settingsOption : defaultSettingsPath();
+  SceneSettings result;
+  std::string where;
+  bool found = false;
+  std::string known;
+  if (!settingsPath.empty() && (settingsOption || fs::exists(settingsPath, ec))) {
+    const SettingsFile file = loadSettings(settingsPath, warnings);
+    const auto it = file.scenes.find(scene);
+    if (it != file.scenes.end()) {
+      result = it->second;
+      where = settingsPath.string() + ": scene '" + scene + "'";
+      found = true;
+    }
+    for (const auto& entry : file.scenes) known += (known.empty() ? "" : ", ") + entry.first;
+  }
+  if (!found) {
+    if (fs::is_regular_file(scene, ec)) {
+      result = defaultSceneForModel(scene);
+      // Fit frames the model around what the user typed; --fit frames it on its own.
+      if (!overrides.fit) {
+        result.fitKeeps = FitKeeps{overrides.eye.has_value(), overrides.target.has_value(),
+                                   overrides.near.has_value(), overrides.far.has_value()};
+      }
+      where = "command line: scene '" + scene + "'";
+    } else if (settingsPath.empty()) {
+      throw InputError(scene + ": no such scene or model file (no settings.json found)");
+    } else {
+      throw InputError(settingsPath.string() + ": unknown scene '" + scene +
+                       "' and no model file of that name (scenes: " + known + ")");
+    }
+  }
+  applyOverrides(overrides, result);
+  validateScene(result, where, keyOrigins(overrides));
+  return result;
+}
+
+int runCommandLine(int argc, char** argv, std::ostream& out, std::ostream& err) {
+  try {
+    return parseAndRun(argc, argv, out, err);
+  } catch (const InputError& e) {
+    err << "zrender: error: " << oneLine(e.what()) << "\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    err << "zrender: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    err << "zrender: internal error: " << oneLine(e.what()) << "\n";
+    return 1;
+  }
+}
+
+}  // namespace zrender

@@ -1,0 +1,122 @@
+#include "zrender/io/ImageOutput.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <system_error>
+
+#include "zrender/base/Error.hpp"
+#include "zrender/io/ImageCodecs.hpp"
+
+namespace zrender {
+
+namespace {
+
+// The nearest of a pixel's samples (its smallest key).
+DepthKey pixelKey(const FrameBuffer& fb, int scale, int x, int y) {
+  if (scale == 1) return fb.row(y)[x];
+  const DepthKey* r0 = fb.row(2 * y);
+  const DepthKey* r1 = fb.row(2 * y + 1);
+  return std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]});
+}
+
+// The missing folders above `path`, or InputError naming it.
+void createParentFolders(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path(), ec);
+  if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
+}
+
+}  // namespace
+
+std::initializer_list<const char*> colorExtensions() {
+  static const std::initializer_list<const char*> list = {".png", ".jpg", ".jpeg", ".bmp",
+                                                          ".ppm", ".tif", ".tiff"};
+  return list;
+}
+
+void checkOutputExtension(const std::filesystem::path& path,
+                          std::initializer_list<const char*> allowed, const char* what) {
+  const std::string ext = lowerExtension(path);
+  std::string list;
+  for (const char* a : allowed) {
+    if (ext == a) return;
+    list += (list.empty() ? "" : " ") + std::string(a);
+  }
+  throw InputError(path.string() + ": unsupported " + what + " format '" + ext + "' (use " + list +
+                   ")");
+}
+
+std::filesystem::path pathBeside(const std::filesystem::path& target, const char* tag) {
+  return target.parent_path() / ("." + target.stem().string() + "." + tag + "-" +
+                                 std::to_string(::getpid()) + target.extension().string());
+}
+
+void checkWritable(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  createParentFolders(path);
+  if (fs::is_directory(path, ec))
+    throw InputError(path.string() + ": cannot write file (a folder has that name)");
+  const fs::path probe = pathBeside(path, "probe");
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError(path.string() + ": cannot write file: " + std::strerror(errno));
+  ::close(fd);
+  fs::remove(probe, ec);
+}
+
+void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  createParentFolders(path);
+  const fs::path tmp = pathBeside(path, "tmp");
+  std::string reason;
+  if (!encodeImageFile(tmp, image, reason)) {
+    fs::remove(tmp, ec);
+    throw InputError(path.string() + ": " + reason);
+  }
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;  // not ec: its message is the reason given
+    fs::remove(tmp, ignored);
+    throw InputError(path.string() + ": cannot replace file: " + ec.message());
+  }
+}
+
+cv::Mat depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
+  const int width = fb.width() / scale, height = fb.height() / scale;
+  cv::Mat out(height, width, sixteenBit ? CV_16UC1 : CV_32FC1);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float d = keyDepth(pixelKey(fb, scale, x, y));
+      if (sixteenBit)
+        out.at<uint16_t>(y, x) = uint16_t(std::lround(double(d) * 65535.0));
+      else
+        out.at<float>(y, x) = d;
+    }
+  }
+  return out;
+}
+
+cv::Mat idImage(const FrameBuffer& fb, int scale) {
+  const int width = fb.width() / scale, height = fb.height() / scale;
+  cv::Mat out(height, width, CV_8UC3);
+  for (int y = 0; y < height; ++y) {
+    uchar* p = out.ptr<uchar>(y);
+    for (int x = 0; x < width; ++x) {
+      const uint32_t v = keyFaceId(pixelKey(fb, scale, x, y)) + 1;  // background wraps to 0
+      p[3 * x + 2] = uchar(v);                                      // R: low byte
+      p[3 * x + 1] = uchar(v >> 8);                                 // G: middle byte
+      p[3 * x + 0] = uchar(v >> 16);                                // B: high byte
+    }
+  }
+  return out;
+}
+
+}  // namespace zrender

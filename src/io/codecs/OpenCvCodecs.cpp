@@ -1,0 +1,64 @@
+// libzrender_codecs.so: OpenCV's imgcodecs and videoio behind the C interface of
+// CodecPlugin.h, loaded by the program only when a format other than PNG or a video is used.
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "zrender/io/CodecPlugin.h"
+
+namespace {
+
+void setError(char* error, size_t size, std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  std::snprintf(error, size, "%s", text.c_str());
+}
+
+}  // namespace
+
+extern "C" {
+
+__attribute__((visibility("default"))) int zrenderImwrite(const char* path, const cv::Mat* image,
+                                                          char* error, size_t size) {
+  try {
+    if (cv::imwrite(path, *image)) return 0;
+    setError(error, size, "cannot write file");
+  } catch (const cv::Exception& e) {
+    setError(error, size, "cannot encode image: " + e.msg);
+  }
+  return 1;
+}
+
+__attribute__((visibility("default"))) int zrenderImread(const char* path, int flags, cv::Mat* out,
+                                                         char* error, size_t size) {
+  try {
+    *out = cv::imread(path, flags);
+    if (!out->empty()) return 0;
+    setError(error, size, "cannot be read as an image");
+  } catch (const cv::Exception& e) {
+    setError(error, size, "cannot decode image: " + e.msg);
+  }
+  return 1;
+}
+
+__attribute__((visibility("default"))) void* zrenderVideoOpen(const char* path, int fourcc,
+                                                              double fps, int width, int height) {
+  auto* writer = new cv::VideoWriter(path, fourcc, fps, cv::Size(width, height));
+  if (writer->isOpened()) return writer;
+  delete writer;
+  return nullptr;
+}
+
+__attribute__((visibility("default"))) int zrenderVideoWrite(void* writer, const cv::Mat* frame) {
+  static_cast<cv::VideoWriter*>(writer)->write(*frame);
+  return 0;
+}
+
+__attribute__((visibility("default"))) void zrenderVideoClose(void* writer) {
+  delete static_cast<cv::VideoWriter*>(writer);
+}
+
+}  // extern "C"

@@ -1,0 +1,90 @@
+#include "zrender/raster/PolygonEdges.hpp"
+
+#include <algorithm>
+
+namespace zrender {
+
+namespace {
+
+// Stable counting sort of `in` by row (keyOf(item) in [0, rows)) into `out`; `bucket` receives
+// the rows + 1 offsets. `moved(i, j)` is told that in[i] went to out[j].
+template <typename T, typename KeyOf, typename Moved>
+void sortByRow(const std::vector<T>& in, int rows, KeyOf keyOf, std::vector<T>& out,
+               std::vector<uint32_t>& bucket, Moved moved) {
+  bucket.assign(size_t(rows) + 1, 0);
+  for (const T& item : in) ++bucket[size_t(keyOf(item)) + 1];
+  for (int r = 0; r < rows; ++r) bucket[size_t(r) + 1] += bucket[size_t(r)];
+  out.resize(in.size());
+  // bucket[r] serves as the cursor of row r, then is shifted back into place.
+  for (size_t i = 0; i < in.size(); ++i) {
+    const uint32_t j = bucket[size_t(keyOf(in[i]))]++;
+    out[j] = in[i];
+    moved(i, j);
+  }
+  for (int r = rows; r > 0; --r) bucket[size_t(r)] = bucket[size_t(r) - 1];
+  bucket[0] = 0;
+}
+
+}  // namespace
+
+void PolygonTables::build(const FrameGeometry& g, int width, int height) {
+  height = std::max(height, 0);
+  unsortedPolygons_.clear();
+  unsortedEdges_.clear();
+  triangleCount = 0;
+  polygonsEnding.assign(size_t(height), 0);
+  for (uint32_t f = 0; f < uint32_t(g.faces.size()) && width > 0 && height > 0; ++f) {
+    const ScreenFace& face = g.faces[f];
+    const FixedPoint* v = g.vertices.data() + face.firstVertex;
+    const uint32_t n = face.vertexCount;
+    // Horizontal extent first: a sample is covered only if its centre lies in [minX, maxX).
+    int32_t minX = v[0].x, maxX = v[0].x;
+    for (uint32_t i = 1; i < n; ++i) {
+      minX = std::min(minX, v[i].x);
+      maxX = std::max(maxX, v[i].x);
+    }
+    if (firstSampleAtOrAfter(minX) > width - 1 || lastSampleAtOrBefore(maxX) < 0) continue;
+
+    const uint32_t polygon = uint32_t(unsortedPolygons_.size());
+    const uint32_t edgeBegin = uint32_t(unsortedEdges_.size());
+    int32_t topRow = height, bottomRow = -1;
+    for (uint32_t i = 0; i < n; ++i) {
+      const FixedPoint& a = v[i];
+      const FixedPoint& b = v[i + 1 == n ? 0 : i + 1];
+      if (a.y == b.y) continue;  // horizontal edges are never active
+      const FixedPoint& top = a.y < b.y ? a : b;
+      const FixedPoint& bottom = a.y < b.y ? b : a;
+      // Active rows: centre in [top.y, bottom.y), i.e. centre <= bottom.y - 1.
+      const int32_t first = std::max(firstSampleAtOrAfter(top.y), 0);
+      const int32_t last = std::min(lastSampleAtOrBefore(int64_t(bottom.y) - 1), height - 1);
+      if (first > last) continue;
+      unsortedEdges_.push_back(ClassifiedEdge{top, bottom, first, last, polygon});
+      topRow = std::min(topRow, first);
+      bottomRow = std::max(bottomRow, last);
+    }
+    const uint32_t edgeCount = uint32_t(unsortedEdges_.size()) - edgeBegin;
+    if (edgeCount == 0) continue;
+    unsortedPolygons_.push_back(ClassifiedPolygon{g.triangles[face.firstTriangle].plane, face.id,
+                                                  topRow, bottomRow, 0, edgeCount});
+    ++polygonsEnding[size_t(bottomRow)];
+    triangleCount += face.triangleCount;
+  }
+
+  // CPT: polygons by top row; each gets its slots in the edge pool in that order.
+  newIndex_.resize(unsortedPolygons_.size());
+  sortByRow(
+      unsortedPolygons_, height, [](const ClassifiedPolygon& p) { return p.topRow; }, polygons,
+      polygonBucket, [this](size_t i, uint32_t j) { newIndex_[i] = j; });
+  uint32_t slot = 0;
+  for (ClassifiedPolygon& p : polygons) {
+    p.edgeBegin = slot;
+    slot += p.edgeCount;
+  }
+  // CET: edges by first row, pointing at the sorted polygons.
+  for (ClassifiedEdge& e : unsortedEdges_) e.polygon = newIndex_[e.polygon];
+  sortByRow(
+      unsortedEdges_, height, [](const ClassifiedEdge& e) { return e.firstRow; }, edges, edgeBucket,
+      [](size_t, uint32_t) {});
+}
+
+}  // namespace zrender

@@ -1,0 +1,76 @@
+#include "zrender/scene/Scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace zrender {
+
+Mat4 Scene::modelMatrix(uint32_t instance) const {
+  return translation(instanceOffsets[instance]) * rotation(settings.angle, settings.axis);
+}
+
+namespace {
+
+std::vector<Vec3> gridOffsets(const SceneSettings& s) {
+  if (!s.grid) return {Vec3(0, 0, 0)};
+  const Grid& g = *s.grid;
+  std::vector<Vec3> offsets;
+  offsets.reserve(size_t(g.instanceCount()));
+  // Instance (i, j, k) is numbered i fastest, then j, then k (SPEC §3).
+  for (int k = 0; k < g.count[2]; ++k)
+    for (int j = 0; j < g.count[1]; ++j)
+      for (int i = 0; i < g.count[0]; ++i)
+        offsets.emplace_back((i - (g.count[0] - 1) / 2.0) * g.spacing[0],
+                             (j - (g.count[1] - 1) / 2.0) * g.spacing[1],
+                             (k - (g.count[2] - 1) / 2.0) * g.spacing[2]);
+  return offsets;
+}
+
+}  // namespace
+
+Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, cv::Mat texture) {
+  Scene scene;
+  scene.settings = settings;
+  scene.mesh = std::move(mesh);
+  scene.instanceOffsets = gridOffsets(settings);
+
+  // Bounding sphere: centre of the bounding box of all instances, radius to the farthest
+  // vertex. Instances only translate, so the extreme instances are the corners of the grid.
+  const Mat4 rot = rotation(settings.angle, settings.axis);
+  std::vector<Vec3> rotated;
+  rotated.reserve(scene.mesh->positions.size());
+  for (const Vec3& p : scene.mesh->positions) rotated.push_back(transformPoint(rot, p));
+  const Box3 box = boundingBox(rotated);
+  Vec3 offLo = scene.instanceOffsets.front(), offHi = scene.instanceOffsets.back();
+  for (int a = 0; a < 3; ++a) {
+    if (offLo[a] > offHi[a]) std::swap(offLo[a], offHi[a]);
+  }
+  if (!rotated.empty()) {
+    scene.boundsCentre = ((box.lo + offLo) + (box.hi + offHi)) * 0.5;
+    double r2 = 0.0;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 off((corner & 1) ? offHi[0] : offLo[0], (corner & 2) ? offHi[1] : offLo[1],
+                     (corner & 4) ? offHi[2] : offLo[2]);
+      for (const Vec3& p : rotated) {
+        const Vec3 d = p + off - scene.boundsCentre;
+        r2 = std::max(r2, d.dot(d));
+      }
+    }
+    scene.boundsRadius = std::sqrt(r2);
+  }
+
+  scene.texture = std::move(texture);
+  return scene;
+}
+
+uint64_t triangleCount(const Scene& scene) {
+  uint64_t n = 0;
+  const Mesh& m = *scene.mesh;
+  for (size_t f = 0; f < m.faceCount(); ++f) {
+    const uint32_t c = m.cornerCount(f);
+    if (c >= 3) n += c - 2;
+  }
+  return n * scene.instanceCount();
+}
+
+}  // namespace zrender
