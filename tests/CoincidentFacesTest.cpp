@@ -6,8 +6,8 @@
 
 #include <random>
 
+#include "FaceByFace.hpp"
 #include "TestSupport.hpp"
-#include "zrender/transform/FaceTransformer.hpp"
 #include "zrender/visibility/CoincidentTriangles.hpp"
 #include "zrender/visibility/HierarchicalAlgorithm.hpp"
 #include "zrender/visibility/Octree.hpp"
@@ -185,7 +185,7 @@ TEST(CoincidentFaces, TheOctreeNodeTestBreaksADepthTieByTheNodesSmallestId) {
   const Scene scene = makeScene(
       s, test::makeMesh({{-2, -2, 0}, {2, -2, 0}, {2, 2, 0}, {-2, 2, 0}}, {{0, 1, 2}, {0, 2, 3}}));
   const Camera camera = makeCamera(scene);
-  FaceTransformer transformer(scene, camera, 1, false);
+  test::FaceByFace transformer(scene, camera, 1, false);
   FrameGeometry wall;
   transformer.transformFace(0, wall);
   transformer.transformFace(1, wall);

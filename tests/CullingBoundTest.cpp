@@ -4,8 +4,11 @@
 
 #include "TestSupport.hpp"
 #include "zrender/measure/CullingBound.hpp"
+#include "zrender/measure/KeptTriangles.hpp"
+#include "zrender/measure/SkippedBatches.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/visibility/OctreeAlgorithm.hpp"
+#include "zrender/visibility/ZBufferAlgorithm.hpp"
 
 namespace zrender {
 namespace {
@@ -76,42 +79,49 @@ TEST(CullingBound, OnTheBunnyPerfectLeafCullingDrawsFewerLeavesAndTheSameBuffers
   EXPECT_LT(b.visibleLeaves, b.octreeLeavesDrawn);
 }
 
-TEST(CullingBound, SkippedLeavesAreNotDrawn) {
-  // The octree's measurement hook really passes leaves over: skipping every leaf leaves the
-  // background, counted as culled nodes.
+TEST(CullingBound, SkippedBatchesAreNotDrawn) {
+  // The measurement's source really passes batches over: the octree skipping every leaf leaves
+  // the background, though every leaf is still pulled (and counted).
   const Scene scene = threeSquares();
   const Camera camera = makeCamera(scene);
-  Renderer renderer(scene, "octree");
-  renderer.renderFrame(camera);
-  EXPECT_TRUE(showsFace(renderer.buffer(), 0));
-  EXPECT_EQ(renderer.stats().octreeNodesCulled, 0u);
-  uint32_t asked = 0;
-  dynamic_cast<OctreeAlgorithm&>(renderer.algorithm())
-      .skipLeaves([&asked](const uint32_t*, uint32_t count) {
-        asked += count;
-        return true;
-      });
-  renderer.renderFrame(camera);
-  EXPECT_EQ(asked, 3u);  // every face, once
-  EXPECT_FALSE(showsFace(renderer.buffer(), 0));
-  EXPECT_FALSE(showsFace(renderer.buffer(), 1));
-  EXPECT_EQ(renderer.stats().octreeNodesCulled, 1u);
-  EXPECT_TRUE(renderer.geometry().triangles.empty());
+  size_t pulled = 0;
+  Renderer all(scene, std::make_unique<OctreeAlgorithm>(),
+               [&pulled](GeometrySource& t, FaceBatches b) {
+                 return std::make_unique<SkippedBatches>(
+                     t, std::vector<bool>(b.starts->size() - 1, false), pulled);
+               });
+  all.renderFrame(camera);
+  EXPECT_TRUE(showsFace(all.buffer(), 0));
+  const size_t leaves = pulled;
+  EXPECT_GE(leaves, 1u);
+  size_t skippedPulls = 0;
+  Renderer none(scene, std::make_unique<OctreeAlgorithm>(), [&](GeometrySource& t, FaceBatches b) {
+    return std::make_unique<SkippedBatches>(t, std::vector<bool>(b.starts->size() - 1, true),
+                                            skippedPulls);
+  });
+  none.renderFrame(camera);
+  EXPECT_EQ(skippedPulls, leaves);
+  for (uint32_t id = 0; id < 3; ++id) EXPECT_FALSE(showsFace(none.buffer(), id));
+  EXPECT_TRUE(none.geometry().triangles.empty());
+  EXPECT_TRUE(none.geometry().faces.empty());
 }
 
 TEST(CullingBound, KeptTrianglesAreAllThatIsDrawn) {
-  // Without the front square, the hidden one shows: the filter really drops triangles.
+  // Without the front square, the hidden one shows: the source really drops triangles.
   const Scene scene = threeSquares();
   const Camera camera = makeCamera(scene);
   Renderer renderer(scene, "zbuffer");
   renderer.renderFrame(camera);
   EXPECT_TRUE(showsFace(renderer.buffer(), 0));
   EXPECT_FALSE(showsFace(renderer.buffer(), 2));
-  renderer.keepTriangles([](const ScreenTriangle& t) { return t.id != 0; });
-  renderer.renderFrame(camera);
-  EXPECT_FALSE(showsFace(renderer.buffer(), 0));
-  EXPECT_TRUE(showsFace(renderer.buffer(), 2));
-  EXPECT_EQ(renderer.geometry().triangles.size(), 4u);
+  Renderer kept(scene, std::make_unique<ZBufferAlgorithm>(), [](GeometrySource& t, FaceBatches) {
+    return std::make_unique<KeptTriangles>(t,
+                                           [](const ScreenTriangle& tri) { return tri.id != 0; });
+  });
+  kept.renderFrame(camera);
+  EXPECT_FALSE(showsFace(kept.buffer(), 0));
+  EXPECT_TRUE(showsFace(kept.buffer(), 2));
+  EXPECT_EQ(kept.geometry().triangles.size(), 4u);
 }
 
 }  // namespace

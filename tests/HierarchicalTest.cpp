@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "FaceByFace.hpp"
 #include "TestSupport.hpp"
 #include "zrender/base/CpuFeatures.hpp"
 #include "zrender/raster/DepthPyramid.hpp"
@@ -448,9 +449,8 @@ TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
     batches.push_back(std::min(uint32_t(order.size()), batches.back() + 1 + uint32_t(rng() % 40)));
 
   for (bool cull : {true, false}) {
-    FaceTransformer byFace(scene, 1, cull), byBatch(scene, 1, cull);
-    byFace.prepare(&order);
-    byBatch.prepare(&order, &batches);
+    test::FaceByFace byFace(scene, 1, cull);
+    FaceTransformer byBatch(scene, 1, cull, FaceBatches{&order, &batches});
     for (const Vec3& eye : {Vec3(0.3, 0.2, 1.0), Vec3(-0.5, -0.3, 2.5)}) {
       const Camera camera = floorGridCamera(s, scene, eye);
       byFace.beginFrame(camera);
@@ -458,7 +458,7 @@ TEST(FaceTransformerTest, BatchesGiveWhatFaceByFaceGives) {
       FrameGeometry expected, actual;
       for (uint32_t id : order) byFace.transformFace(id, expected);
       for (uint32_t batch = 0; batch + 1 < batches.size(); ++batch)
-        byBatch.transformBatch(batch, actual);
+        byBatch.pullBatch(batch, actual);
       // Not vacuous: many faces went through the whole path, some were clipped or dropped.
       EXPECT_GT(expected.triangles.size() + expected.counters.backfaceCulled, 300u);
       EXPECT_GT(expected.triangles.size(), 0u);
@@ -477,7 +477,8 @@ TEST(FaceTransformerTest, InstancesGiveWhatFaceByFaceGives) {
   const uint32_t nf = uint32_t(scene.mesh->faceCount());
   const std::vector<uint32_t> instances = {3, 0, 5, 1, 4, 2};
   for (bool cull : {true, false}) {
-    FaceTransformer byFace(scene, 1, cull), byInstance(scene, 1, cull);
+    test::FaceByFace byFace(scene, 1, cull);
+    FaceTransformer byInstance(scene, 1, cull);
     for (const Vec3& eye : {Vec3(0.3, 0.2, 1.0), Vec3(-0.5, -0.3, 2.5)}) {
       const Camera camera = floorGridCamera(s, scene, eye);
       byFace.beginFrame(camera);
@@ -485,7 +486,7 @@ TEST(FaceTransformerTest, InstancesGiveWhatFaceByFaceGives) {
       FrameGeometry expected, actual;
       for (uint32_t k : instances) {
         for (uint32_t f = 0; f < nf; ++f) byFace.transformFace(k * nf + f, expected);
-        byInstance.transformInstance(k, actual);
+        byInstance.pullInstance(k, actual);
       }
       // Not vacuous: many faces went through the whole path, some were clipped or dropped.
       EXPECT_GT(expected.triangles.size() + expected.counters.backfaceCulled, 300u);
@@ -528,13 +529,14 @@ TEST(FaceTransformerTest, InstancesWhollyOutsideTheViewAreOnlyCounted) {
     const Scene scene = makeScene(s, mesh);
     const Camera camera = makeCamera(scene);
     const uint32_t nf = uint32_t(scene.mesh->faceCount());
-    FaceTransformer byFace(scene, camera, 1, true), byInstance(scene, camera, 1, true);
+    test::FaceByFace byFace(scene, camera, 1, true);
+    FaceTransformer byInstance(scene, camera, 1, true);
     FrameGeometry expected, actual;
     ASSERT_EQ(scene.instanceCount(), c.outside.size());
     for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
       EXPECT_EQ(byInstance.viewOfInstance(k).outside, bool(c.outside[k])) << "instance " << k;
       for (uint32_t face = 0; face < nf; ++face) byFace.transformFace(k * nf + face, expected);
-      byInstance.transformInstance(k, actual);
+      byInstance.pullInstance(k, actual);
     }
     EXPECT_GT(expected.triangles.size(), 0u);
     EXPECT_GT(expected.counters.clippedAway, 0u);
@@ -566,12 +568,13 @@ TEST(FaceTransformerTest, InstanceNearestDepthBoundsEveryFaceTightly) {
       const Camera camera = makeCamera(scene);
       const uint32_t nf = uint32_t(scene.mesh->faceCount());
       FaceTransformer t(scene, camera, 1, false);
+      test::FaceByFace byFace(scene, camera, 1, false);
       for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-        const FaceTransformer::InstanceView view = t.viewOfInstance(k);
+        const InstanceView view = t.viewOfInstance(k);
         const float nearest = view.nearest;
         const SampleRect& area = view.area;
         FrameGeometry g;
-        for (uint32_t face = 0; face < nf; ++face) t.transformFace(k * nf + face, g);
+        for (uint32_t face = 0; face < nf; ++face) byFace.transformFace(k * nf + face, g);
         if (g.counters.clippedAway > 0) {  // reaches past the near plane or a side
           zero += nearest == 0.0f;
           continue;
@@ -614,10 +617,9 @@ void transformWithAndWithout(const Scene& scene, TriangleFilter& filter, FrameGe
                              FrameGeometry& filtered) {
   const Camera camera = makeCamera(scene);
   FaceTransformer without(scene, camera, 1, true), with(scene, camera, 1, true);
-  with.setFilter(&filter);
   for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-    without.transformInstance(k, plain);
-    with.transformInstance(k, filtered);
+    without.pullInstance(k, plain);
+    with.pullInstance(k, filtered, &filter);
   }
 }
 
@@ -696,14 +698,15 @@ TEST(FaceTransformerTest, TrianglesCoveringNoSampleCentreAreDroppedBeforeTheirPl
   const Scene scene = makeScene(s, test::makeMesh(p, f));
   FaceTransformer transformer(scene, makeCamera(scene), 1, true);
   FrameGeometry g;
-  transformer.transformInstance(0, g);
+  transformer.pullInstance(0, g);
   ASSERT_EQ(g.faces.size(), 1u);  // no plane set up, nothing stored for face 0
   EXPECT_EQ(g.faces[0].id, 1u);
   // Counted nowhere, as the z-buffer's set-up never counted them.
   EXPECT_EQ(g.counters.degenerate + g.counters.backfaceCulled + g.counters.clippedAway, 0u);
   // The same faces one at a time (the general path) agree.
   FrameGeometry one;
-  for (uint32_t id = 0; id < 2; ++id) transformer.transformFace(id, one);
+  test::FaceByFace byFace(scene, makeCamera(scene), 1, true);
+  for (uint32_t id = 0; id < 2; ++id) byFace.transformFace(id, one);
   ASSERT_EQ(one.faces.size(), 1u);
   EXPECT_EQ(one.faces[0].id, 1u);
   // And no algorithm draws face 0, while face 1 owns the sample it covers.
@@ -855,7 +858,7 @@ struct WallPyramid {
   FrameBuffer fb;
   HzbRasterizer r;
   WallPyramid(const Scene& scene, const Camera& camera) {
-    FaceTransformer transformer(scene, camera, 1, false);
+    test::FaceByFace transformer(scene, camera, 1, false);
     FrameGeometry wall;
     transformer.transformFace(0, wall);
     transformer.transformFace(1, wall);

@@ -284,8 +284,8 @@ FrameBuffer runZBuffer(FrameGeometry& g) {
   Warnings w;
   const Scene scene = makeScene(test::tinySettings(g.width), mesh);
   const Camera camera = makeCamera(scene);
-  FaceTransformer transformer(scene, camera, 1, true);
-  FrameInput input{scene, camera, transformer, g};
+  test::GivenGeometry given;
+  FrameInput input{scene, camera, given, g};
   FrameBuffer fb;
   fb.resize(g.width, g.height);
   RenderStats stats;
@@ -341,7 +341,7 @@ TEST(DepthRule, ReversedSubmissionGivesTheSameBuffers) {
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, false);
   FrameGeometry g;
-  transformer.transformAll(g);
+  transformer.pullAll(g);
   FrameGeometry reversed = g;
   std::reverse(reversed.triangles.begin(), reversed.triangles.end());
   const FrameBuffer a = runZBuffer(g), b = runZBuffer(reversed);
@@ -421,7 +421,7 @@ TEST(DepthRule, TransformSetsTheRangeFromTheCornerDepths) {
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, true);
   FrameGeometry g;
-  transformer.transformAll(g);
+  transformer.pullAll(g);
   ASSERT_EQ(g.faces.size(), 1u);
   const double n = 0.1, f = 10.0;
   auto windowDepth = [&](double d) {

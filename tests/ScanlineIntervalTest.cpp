@@ -14,7 +14,6 @@
 
 #include "TestSupport.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
-#include "zrender/transform/FaceTransformer.hpp"
 #include "zrender/transform/Triangulation.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
@@ -90,7 +89,7 @@ FrameBuffer renderHandMadeFace(const std::vector<FixedPoint>& corners,
   const Scene scene = makeScene(test::tinySettings(8),
                                 test::makeMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
   const Camera camera = makeCamera(scene);
-  FaceTransformer transformer(scene, camera, 1, true);
+  test::GivenGeometry given;
   FrameGeometry geometry;
   geometry.width = geometry.height = 8;
   geometry.vertices = corners;
@@ -113,7 +112,7 @@ FrameBuffer renderHandMadeFace(const std::vector<FixedPoint>& corners,
   FrameBuffer fb;
   fb.resize(8, 8);
   RenderStats stats;
-  FrameInput input{scene, camera, transformer, geometry};
+  FrameInput input{scene, camera, given, geometry};
   alg->render(input, fb, stats);
   return fb;
 }

@@ -13,6 +13,7 @@
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Mesh.hpp"
 #include "zrender/scene/Scene.hpp"
+#include "zrender/transform/GeometrySource.hpp"
 
 namespace zrender::test {
 
@@ -85,6 +86,17 @@ void expectSameFrame(const Rendered& ref, const Rendered& r, const std::string& 
 
 // Number of samples some face covers.
 size_t coveredSamples(const FrameBuffer& fb);
+
+// A GeometrySource for algorithms run on a FrameGeometry built by the test: its pulls add
+// nothing, as the faces are already in the geometry the algorithm is given.
+class GivenGeometry : public GeometrySource {
+ public:
+  void beginFrame(const Camera&) override {}
+  void pullAll(FrameGeometry&) override {}
+  void pullInstance(uint32_t, FrameGeometry&, TriangleFilter*) override {}
+  void pullBatch(uint32_t, FrameGeometry&) override {}
+  double transformMs() const override { return 0.0; }
+};
 
 // Number of samples whose keys differ.
 size_t countDifferences(const FrameBuffer& a, const FrameBuffer& b);

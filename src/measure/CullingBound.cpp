@@ -4,8 +4,11 @@
 #include <vector>
 
 #include "zrender/base/Median.hpp"
+#include "zrender/measure/KeptTriangles.hpp"
+#include "zrender/measure/SkippedBatches.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/visibility/OctreeAlgorithm.hpp"
+#include "zrender/visibility/ZBufferAlgorithm.hpp"
 
 namespace zrender {
 
@@ -13,9 +16,6 @@ CullingBound measureCullingBound(const Scene& scene, const Camera& camera, int r
                                  uint32_t leafFaces) {
   CullingBound bound;
   Renderer all(scene, "zbuffer");
-  Renderer visibleOnly(scene, "zbuffer");
-  Renderer octree(scene, std::make_unique<OctreeAlgorithm>(leafFaces));
-  Renderer leafBound(scene, std::make_unique<OctreeAlgorithm>(leafFaces));
   all.renderFrame(camera);
   bound.triangles = all.geometry().triangles.size();
 
@@ -29,29 +29,36 @@ CullingBound measureCullingBound(const Scene& scene, const Camera& camera, int r
     ++bound.visibleFaces;
   }
   for (const ScreenTriangle& t : all.geometry().triangles) bound.visibleTriangles += visible[t.id];
-  visibleOnly.keepTriangles([&visible](const ScreenTriangle& t) { return bool(visible[t.id]); });
+  Renderer visibleOnly(scene, std::make_unique<ZBufferAlgorithm>(),
+                       [&visible](GeometrySource& transform, FaceBatches) {
+                         return std::make_unique<KeptTriangles>(
+                             transform,
+                             [&visible](const ScreenTriangle& t) { return bool(visible[t.id]); });
+                       });
 
-  auto holdsVisibleFace = [&visible](const uint32_t* faceIds, uint32_t count) {
-    for (uint32_t i = 0; i < count; ++i)
-      if (visible[faceIds[i]]) return true;
-    return false;
-  };
-  // The leaves the octree draws, counted in a frame of its own (the hook is not free).
-  auto& octreeAlgorithm = dynamic_cast<OctreeAlgorithm&>(octree.algorithm());
-  octreeAlgorithm.skipLeaves([&bound](const uint32_t*, uint32_t) {
-    ++bound.octreeLeavesDrawn;
-    return false;
-  });
+  // The octree as it is (counting the leaves it draws in a frame of its own), and the octree
+  // skipping the leaves that hold no visible face.
+  size_t octreeLeaves = 0, boundLeaves = 0;
+  Renderer octree(scene, std::make_unique<OctreeAlgorithm>(leafFaces),
+                  [&octreeLeaves](GeometrySource& transform, FaceBatches) {
+                    return std::make_unique<SkippedBatches>(transform, std::vector<bool>(),
+                                                            octreeLeaves);
+                  });
+  Renderer leafBound(scene, std::make_unique<OctreeAlgorithm>(leafFaces),
+                     [&](GeometrySource& transform, FaceBatches batches) {
+                       std::vector<bool> skip;
+                       for (size_t b = 0; b + 1 < batches.starts->size(); ++b) {
+                         bool holdsVisible = false;
+                         for (uint32_t i = (*batches.starts)[b]; i < (*batches.starts)[b + 1]; ++i)
+                           holdsVisible = holdsVisible || visible[(*batches.faces)[i]];
+                         skip.push_back(!holdsVisible);
+                         bound.visibleLeaves += holdsVisible;
+                       }
+                       return std::make_unique<SkippedBatches>(transform, std::move(skip),
+                                                               boundLeaves);
+                     });
   octree.renderFrame(camera);
-  octreeAlgorithm.skipLeaves(nullptr);
-  dynamic_cast<OctreeAlgorithm&>(leafBound.algorithm())
-      .skipLeaves([&](const uint32_t* faceIds, uint32_t count) {
-        return !holdsVisibleFace(faceIds, count);
-      });
-  for (const OctreeNode& node : octreeAlgorithm.octree().nodes())
-    if (node.childMask == 0)
-      bound.visibleLeaves += holdsVisibleFace(
-          octreeAlgorithm.octree().faces().data() + node.faceBegin, node.faceEnd - node.faceBegin);
+  bound.octreeLeavesDrawn = octreeLeaves;
 
   std::vector<double> frame, raster, visibleRaster, octreeFrame, leafFrame, leafTransform,
       leafRaster;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <map>
 
+#include "zrender/measure/KeptTriangles.hpp"
 #include "zrender/render/Renderer.hpp"
+#include "zrender/visibility/ZBufferAlgorithm.hpp"
 
 namespace zrender {
 
@@ -53,11 +55,15 @@ std::vector<RowOcclusion> measureRowOcclusion(const Scene& scene, const Camera& 
   const std::vector<size_t> visible = samplesPerRow(renderer.buffer(), rowOfFace, rows.size());
   std::vector<RowOcclusion> result;
   for (uint32_t r = 0; r < rows.size(); ++r) {
-    renderer.keepTriangles(
-        [&rowOfFace, r](const ScreenTriangle& t) { return rowOfFace[t.id] == r; });
-    renderer.renderFrame(camera);
-    const std::vector<size_t> alone = samplesPerRow(renderer.buffer(), rowOfFace, rows.size());
-    result.push_back(RowOcclusion{rows[r].offsetZ, alone[r], visible[r]});
+    Renderer alone(scene, std::make_unique<ZBufferAlgorithm>(),
+                   [&rowOfFace, r](GeometrySource& transform, FaceBatches) {
+                     return std::make_unique<KeptTriangles>(
+                         transform,
+                         [&rowOfFace, r](const ScreenTriangle& t) { return rowOfFace[t.id] == r; });
+                   });
+    alone.renderFrame(camera);
+    const std::vector<size_t> samples = samplesPerRow(alone.buffer(), rowOfFace, rows.size());
+    result.push_back(RowOcclusion{rows[r].offsetZ, samples[r], visible[r]});
   }
   return result;
 }

@@ -1,7 +1,6 @@
 #include "zrender/visibility/HierarchicalAlgorithm.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "zrender/raster/TriangleFill.hpp"
@@ -46,11 +45,6 @@ void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
 
 namespace {
 
-double nowMilliseconds() {
-  using namespace std::chrono;
-  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
-}
-
 // The transform's filter: a triangle face is dropped when the pyramid proves it hidden.
 class PyramidFilter : public TriangleFilter {
  public:
@@ -85,8 +79,9 @@ class PyramidFilter : public TriangleFilter {
 
 }  // namespace
 
-void HierarchicalAlgorithm::prepare(const Scene& scene) {
+FaceBatches HierarchicalAlgorithm::prepare(const Scene& scene) {
   meshCentre_ = boundingBox(scene.mesh->positions).centre();
+  return FaceBatches();
 }
 
 void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
@@ -110,13 +105,9 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
   rasterizer_.begin(fb);
   PyramidFilter filter(rasterizer_, stats);
   for (size_t i = 0; i < instances_.size(); ++i) {
-    const double t0 = nowMilliseconds();
     const size_t firstTriangle = g.triangles.size();
     // The first instance finds the pyramid empty: nothing to ask it.
-    input.transformer.setFilter(i > 0 ? &filter : nullptr);
-    input.transformer.transformInstance(instances_[i], g);
-    input.transformer.setFilter(nullptr);
-    stats.lazyTransformMs += nowMilliseconds() - t0;
+    input.source.pullInstance(instances_[i], g, i > 0 ? &filter : nullptr);
 
     // Band order keeps the z-buffer's cache locality; in the last instance, the rows above a
     // band are final once it starts (no later triangle starts above it).

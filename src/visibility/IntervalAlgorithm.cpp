@@ -23,6 +23,7 @@ inline DepthKey capped(DepthKey k) {
 }  // namespace
 
 void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+  input.source.pullAll(input.geometry);
   const int width = fb.width(), height = fb.height();
   tables_.build(input.geometry, width, height);
   stats.trianglesRasterized += tables_.triangleCount;

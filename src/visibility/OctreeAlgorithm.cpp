@@ -1,18 +1,12 @@
 #include "zrender/visibility/OctreeAlgorithm.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
 namespace zrender {
 
 namespace {
-
-double nowMilliseconds() {
-  using namespace std::chrono;
-  return duration<double, std::milli>(steady_clock::now().time_since_epoch()).count();
-}
 
 // A node's screen rectangle is tested against up to this many pyramid nodes (one node test
 // saves many triangles, so it may look closer than a triangle test).
@@ -79,7 +73,7 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
   return pyramid.occludes(int(minX), int(minY), int(maxX), int(maxY), key, kNodeQueryNodes);
 }
 
-void OctreeAlgorithm::prepare(const Scene& scene) {
+FaceBatches OctreeAlgorithm::prepare(const Scene& scene) {
   octree_.build(scene, leafFaces_);
   // The leaves' face ranges follow one another in octree_.faces() (the tree is built in
   // Morton order), so they are the batches in that order.
@@ -99,6 +93,7 @@ void OctreeAlgorithm::prepare(const Scene& scene) {
   }
   if (batches_.back() != octree_.faces().size())
     throw std::logic_error("octree leaves do not tile the face list");
+  return FaceBatches{&octree_.faces(), &batches_};
 }
 
 void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
@@ -121,18 +116,11 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
       continue;
     }
     if (node.childMask == 0) {
-      if (skipLeaf_ &&
-          skipLeaf_(octree_.faces().data() + node.faceBegin, node.faceEnd - node.faceBegin)) {
-        ++stats.octreeNodesCulled;
-        continue;
-      }
-      const double t0 = nowMilliseconds();
       const size_t firstTriangle = g.triangles.size();
-      input.transformer.transformBatch(leafBatch_[nodeIndex], g);
-      stats.lazyTransformMs += nowMilliseconds() - t0;
+      input.source.pullBatch(leafBatch_[nodeIndex], g);
       // The next node is likely the next leaf: fetch its faces while this one draws.
       if (!stack_.empty() && nodes[stack_.back()].childMask == 0)
-        input.transformer.prefetchBatch(leafBatch_[stack_.back()]);
+        input.source.prefetchBatch(leafBatch_[stack_.back()]);
       // The leaf's screen region was usually not drawn recently: fetch the buffer rows of a
       // triangle a few places ahead while drawing.
       const size_t end = g.triangles.size();

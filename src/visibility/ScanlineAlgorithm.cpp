@@ -7,6 +7,7 @@
 namespace zrender {
 
 void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+  input.source.pullAll(input.geometry);
   const int width = fb.width(), height = fb.height();
   tables_.build(input.geometry, width, height);
   stats.trianglesRasterized += tables_.triangleCount;

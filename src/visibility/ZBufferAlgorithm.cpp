@@ -7,6 +7,7 @@
 namespace zrender {
 
 void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+  input.source.pullAll(input.geometry);
   const int width = fb.width(), height = fb.height();
   const std::vector<ScreenTriangle>& triangles = bands_.sort(input.geometry, width, height);
 

@@ -20,8 +20,6 @@ struct RenderStats {
   uint64_t pixelsWritten = 0;  // depth comparisons that won
   // Counters of one algorithm only (spans, active edges, ...), in print order.
   std::vector<std::pair<std::string, uint64_t>> extra;
-  // Time the algorithm spent transforming faces itself (lazy transform), milliseconds.
-  double lazyTransformMs = 0.0;
 };
 
 }  // namespace zrender

@@ -25,13 +25,23 @@ struct FrameTimings {
   double frameMs() const { return transformMs + rasterMs; }
 };
 
-// Renders frames of one scene with one algorithm. Model-only work (prepare) happens once in
-// the constructor; buffers are reused from frame to frame.
+// Renders frames of one scene with one algorithm: the transform (a FaceTransformer, which the
+// algorithm pulls faces from), visibility, then shading. Model-only work (the algorithm's
+// prepare and the transform's layout) happens once in the constructor; buffers are reused
+// from frame to frame.
 class Renderer {
  public:
+  // Builds what the algorithm pulls from, given the transform and the algorithm's batches: a
+  // GeometrySource between the two (measurements: one that leaves faces out). Its transformMs()
+  // is the frame's transform time.
+  using SourceWrapper =
+      std::function<std::unique_ptr<GeometrySource>(GeometrySource& transform, FaceBatches)>;
+
   Renderer(const Scene& scene, const std::string& algorithm);
-  // With an algorithm object built by the caller (measurements: an octree of another leaf size).
-  Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm);
+  // With an algorithm object built by the caller (measurements: an octree of another leaf
+  // size), and optionally a source between the transform and the algorithm.
+  Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm,
+           const SourceWrapper& wrap = nullptr);
 
   // Renders one frame; the results stay valid until the next call.
   FrameTimings renderFrame(const Camera& camera);
@@ -45,12 +55,6 @@ class Renderer {
   // their triangles only where the algorithm keeps them (not the octree: FrameInput).
   const FrameGeometry& geometry() const { return geometry_; }
   const VisibilityAlgorithm& algorithm() const { return *algorithm_; }
-  VisibilityAlgorithm& algorithm() { return *algorithm_; }
-  // For measurements (CullingBound): frames draw only the transformed triangles for which
-  // `keep` is true (algorithms that transform all faces first only); empty: all of them.
-  void keepTriangles(std::function<bool(const ScreenTriangle&)> keep) {
-    keepTriangle_ = std::move(keep);
-  }
 
  private:
   const Scene& scene_;
@@ -58,12 +62,13 @@ class Renderer {
   Shader shader_;
   int sampleScale_;
   double prepareMs_ = 0.0;
-  FaceTransformer transformer_;
+  std::unique_ptr<FaceTransformer> transformer_;
+  std::unique_ptr<GeometrySource> wrapper_;
+  GeometrySource* source_ = nullptr;  // the wrapper, else the transformer
   FrameBuffer buffer_;
   FrameGeometry geometry_;
   cv::Mat color_;
   RenderStats stats_;
-  std::function<bool(const ScreenTriangle&)> keepTriangle_;
 };
 
 // Whether two frames agree bit for bit: keys (so depth and face ids) and colors. What

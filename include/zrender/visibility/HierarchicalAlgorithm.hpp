@@ -112,8 +112,7 @@ class HzbRasterizer {
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }
-  void prepare(const Scene& scene) override;
-  bool transformsAll() const override { return false; }
+  FaceBatches prepare(const Scene& scene) override;
   void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
 
  private:

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <functional>
 #include <vector>
 
 #include "zrender/visibility/HierarchicalAlgorithm.hpp"
@@ -39,19 +38,11 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
   // `leafFaces`: the octree's leaf size (Octree::build); other sizes are for measurements.
   explicit OctreeAlgorithm(uint32_t leafFaces = Octree::kLeafFaces) : leafFaces_(leafFaces) {}
   std::string name() const override { return "octree"; }
-  void prepare(const Scene& scene) override;
-  bool transformsAll() const override { return false; }
-  const std::vector<uint32_t>* faceOrder() const override { return &octree_.faces(); }
-  // One batch per leaf.
-  const std::vector<uint32_t>* faceBatches() const override { return &batches_; }
+  // Builds the octree; one batch per leaf, in the order of octree().faces().
+  FaceBatches prepare(const Scene& scene) override;
   void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
 
   const Octree& octree() const { return octree_; }
-
-  // For measurements (CullingBound): a leaf for which `skip` is true, given its global face
-  // ids, is passed over as if the pyramid had hidden it (and counted as culled). Empty: none.
-  using LeafSkip = std::function<bool(const uint32_t* faceIds, uint32_t count)>;
-  void skipLeaves(LeafSkip skip) { skipLeaf_ = std::move(skip); }
 
  private:
   uint32_t leafFaces_;
@@ -60,7 +51,6 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
   std::vector<uint32_t> stack_;      // nodes still to visit, nearest on top
   std::vector<uint32_t> batches_;    // leaf boundaries in octree_.faces(), in order
   std::vector<uint32_t> leafBatch_;  // per node: its batch, for leaves
-  LeafSkip skipLeaf_;
 };
 
 }  // namespace zrender

@@ -10,7 +10,7 @@
 #include "zrender/raster/RenderStats.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Scene.hpp"
-#include "zrender/transform/FaceTransformer.hpp"
+#include "zrender/transform/GeometrySource.hpp"
 
 namespace zrender {
 
@@ -18,12 +18,11 @@ namespace zrender {
 struct FrameInput {
   const Scene& scene;
   const Camera& camera;
-  FaceTransformer& transformer;
-  // Every face transformed, in id order, when the algorithm asked for it (transformsAll());
-  // otherwise empty and the algorithm transforms faces as it goes (transformer.transformBatch()
-  // or transformFace()), timing that in RenderStats::lazyTransformMs. After render(), the
-  // renderer reads only geometry.faces (the shader's face colors); an algorithm may drop
+  // Where the algorithm pulls the frame's faces from, in the grain it draws by (all at once,
+  // by instance, or by the batches its prepare() returned), into `geometry`. After render(),
+  // the renderer reads only geometry.faces (the shader's face colors); an algorithm may drop
   // triangles it has drawn (the octree does, leaf by leaf).
+  GeometrySource& source;
   FrameGeometry& geometry;
   // Called by algorithms that finish rows in order (top to bottom), with n when sample rows
   // [0, n) hold their final keys, so that they are shaded while still in cache instead of
@@ -48,17 +47,10 @@ class VisibilityAlgorithm {
  public:
   virtual ~VisibilityAlgorithm() = default;
   virtual std::string name() const = 0;
-  // Work that depends on the model only, done once for all frames (timed as prepare_ms).
-  virtual void prepare(const Scene& /*scene*/) {}
-  // True when the renderer should transform every face before render() (timed as
-  // transform_ms); false for algorithms that transform lazily.
-  virtual bool transformsAll() const { return true; }
-  // After prepare(): the order in which the algorithm usually transforms faces (global face
-  // ids), for the transformer to lay vertices out by; null for face id order.
-  virtual const std::vector<uint32_t>* faceOrder() const { return nullptr; }
-  // With faceOrder(): the groups in which the algorithm transforms faces
-  // (FaceTransformer::transformBatch), as offsets into faceOrder(); null for none.
-  virtual const std::vector<uint32_t>* faceBatches() const { return nullptr; }
+  // Work that depends on the model only, done once for all frames (timed as prepare_ms). Returns
+  // the batches the algorithm pulls (GeometrySource::pullBatch), if any: views of its own
+  // arrays, valid while it lives.
+  virtual FaceBatches prepare(const Scene& /*scene*/) { return FaceBatches(); }
   // `fb` is sized to geometry's sample size but not cleared: clearing is part of the work.
   virtual void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) = 0;
 };
