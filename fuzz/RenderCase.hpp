@@ -14,7 +14,8 @@
 #include <memory>
 #include <string>
 
-#include "zrender/io/Settings.hpp"
+#include "zrender/io/SceneValidation.hpp"
+#include "zrender/io/SettingsFile.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Scene.hpp"

@@ -10,7 +10,8 @@
 #include <string>
 
 #include "FuzzSupport.hpp"
-#include "zrender/io/Settings.hpp"
+#include "zrender/io/SceneValidation.hpp"
+#include "zrender/io/SettingsFile.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Mesh.hpp"
 #include "zrender/scene/Scene.hpp"

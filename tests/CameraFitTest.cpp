@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "TestSupport.hpp"
-#include "zrender/cli/CommandLine.hpp"
+#include "zrender/cli/SceneResolution.hpp"
 
 namespace zrender {
 namespace {

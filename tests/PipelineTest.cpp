@@ -18,6 +18,7 @@
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/shading/Shader.hpp"
+#include "zrender/shading/ShadingModel.hpp"
 
 namespace zrender {
 namespace {

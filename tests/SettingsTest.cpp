@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/io/Settings.hpp"
+#include "zrender/cli/SceneResolution.hpp"
+#include "zrender/io/SceneValidation.hpp"
+#include "zrender/io/SettingsFile.hpp"
 #include "zrender/scene/ShadingMode.hpp"
 
 namespace zrender {

@@ -7,7 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "zrender/io/Settings.hpp"
+#include "zrender/io/SceneValidation.hpp"
+#include "zrender/io/SettingsFile.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/cli/CommandLine.hpp"
+#include "zrender/cli/SceneResolution.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/measure/CullingBound.hpp"
 #include "zrender/measure/RowOcclusion.hpp"

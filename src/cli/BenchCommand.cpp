@@ -1,3 +1,5 @@
+#include "zrender/cli/BenchCommand.hpp"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -10,11 +12,12 @@
 #include <opencv2/core.hpp>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/cli/BenchCommand.hpp"
 #include "zrender/cli/Chart.hpp"
-#include "zrender/cli/CommandLine.hpp"
 #include "zrender/cli/Report.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/io/SceneFiles.hpp"
+#include "zrender/io/SettingsFile.hpp"
 #include "zrender/render/Renderer.hpp"
 
 namespace zrender {

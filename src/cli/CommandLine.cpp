@@ -7,6 +7,8 @@
 #include <filesystem>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/cli/BenchCommand.hpp"
+#include "zrender/cli/RenderCommand.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -141,119 +143,6 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
 }
 
 }  // namespace
-
-fs::path defaultSettingsPath() {
-  std::error_code ec;
-  if (fs::is_regular_file("settings.json", ec)) return "settings.json";
-  // The project the executable was built from: build/zrender -> ./settings.json beside build/.
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    for (fs::path dir = exe.parent_path(); !dir.empty() && dir != dir.root_path();
-         dir = dir.parent_path()) {
-      if (fs::is_regular_file(dir / "settings.json", ec) && fs::is_directory(dir / "src", ec))
-        return dir / "settings.json";
-    }
-  }
-  return {};
-}
-
-void applyOverrides(const SceneOverrides& o, SceneSettings& s) {
-  if (o.width) s.width = *o.width;
-  if (o.height) s.height = *o.height;
-  if (o.eye) s.eye = *o.eye;
-  if (o.target) s.target = *o.target;
-  if (o.up) s.up = *o.up;
-  if (o.axis) s.axis = *o.axis;
-  if (o.fov) s.fovy = *o.fov;
-  if (o.aspect) s.aspect = *o.aspect;
-  if (o.near) s.near = std::abs(*o.near);
-  if (o.far) s.far = std::abs(*o.far);
-  if (o.angle) s.angle = *o.angle;
-  if (o.fit) s.fit = true;
-  if (o.noFit) s.fit = false;
-  if (o.msaa) s.msaa = *o.msaa;
-  if (o.noCull) s.cull = false;
-  if (o.shading) {
-    const auto mode = parseShadingMode(*o.shading);
-    if (!mode) {
-      std::string list;
-      for (const auto& n : shadingModeNames()) list += (list.empty() ? "" : ", ") + n;
-      throw InputError("command line: --shading: unknown shading '" + *o.shading +
-                       "' (choose from: " + list + ")");
-    }
-    s.shading = *mode;
-  }
-}
-
-namespace {
-
-// Which of the given options feed each key's rule in validateScene: eye is checked against
-// target, up against the viewing direction target - eye.
-KeyOrigins keyOrigins(const SceneOverrides& o) {
-  KeyOrigins origins;
-  const auto add = [&](const std::string& key, bool given, const char* option) {
-    if (!given) return;
-    std::string& list = origins[key];
-    list += (list.empty() ? "" : ", ") + std::string(option);
-  };
-  add("width", o.width.has_value(), "--width");
-  add("height", o.height.has_value(), "--height");
-  add("project", o.fov.has_value(), "--fov");
-  add("project", o.aspect.has_value(), "--aspect");
-  add("project", o.near.has_value(), "--near");
-  add("project", o.far.has_value(), "--far");
-  add("msaa", o.msaa.has_value(), "--msaa");
-  add("angle", o.angle.has_value(), "--angle");
-  add("axis", o.axis.has_value(), "--axis");
-  add("target", o.target.has_value(), "--target");
-  add("eye", o.eye.has_value(), "--eye");
-  add("eye", o.target.has_value(), "--target");
-  add("up", o.up.has_value(), "--up");
-  add("up", o.eye.has_value(), "--eye");
-  add("up", o.target.has_value(), "--target");
-  return origins;
-}
-
-}  // namespace
-
-SceneSettings resolveScene(const std::string& scene, const std::optional<fs::path>& settingsOption,
-                           const SceneOverrides& overrides, Warnings& warnings) {
-  std::error_code ec;
-  const fs::path settingsPath = settingsOption ? *settingsOption : defaultSettingsPath();
-  SceneSettings result;
-  std::string where;
-  bool found = false;
-  std::string known;
-  if (!settingsPath.empty() && (settingsOption || fs::exists(settingsPath, ec))) {
-    const SettingsFile file = loadSettings(settingsPath, warnings);
-    const auto it = file.scenes.find(scene);
-    if (it != file.scenes.end()) {
-      result = it->second;
-      where = settingsPath.string() + ": scene '" + scene + "'";
-      found = true;
-    }
-    for (const auto& entry : file.scenes) known += (known.empty() ? "" : ", ") + entry.first;
-  }
-  if (!found) {
-    if (fs::is_regular_file(scene, ec)) {
-      result = defaultSceneForModel(scene);
-      // Fit frames the model around what the user typed; --fit frames it on its own.
-      if (!overrides.fit) {
-        result.fitKeeps = FitKeeps{overrides.eye.has_value(), overrides.target.has_value(),
-                                   overrides.near.has_value(), overrides.far.has_value()};
-      }
-      where = "command line: scene '" + scene + "'";
-    } else if (settingsPath.empty()) {
-      throw InputError(scene + ": no such scene or model file (no settings.json found)");
-    } else {
-      throw InputError(settingsPath.string() + ": unknown scene '" + scene +
-                       "' and no model file of that name (scenes: " + known + ")");
-    }
-  }
-  applyOverrides(overrides, result);
-  validateScene(result, where, keyOrigins(overrides));
-  return result;
-}
 
 int runCommandLine(int argc, char** argv, std::ostream& out, std::ostream& err) {
   try {

@@ -1,3 +1,5 @@
+#include "zrender/cli/RenderCommand.hpp"
+
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -8,7 +10,6 @@
 #include <opencv2/imgproc.hpp>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/cli/CommandLine.hpp"
 #include "zrender/cli/Report.hpp"
 #include "zrender/io/ImageCodecs.hpp"
 #include "zrender/io/ImageOutput.hpp"

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstdint>
+
+#include <opencv2/core.hpp>
+
+#include "zrender/scene/Mesh.hpp"
+#include "zrender/scene/Transforms.hpp"
+
+namespace zrender {
+
+// The formulas and constants of the shading modes (docs/design.md, Faces, ids and shading, and
+// Choices: shading constants). Colors are RGB in 0..1, or packed as 0x00RRGGBB.
+
+// Packs an RGB color in 0..1 as 0x00RRGGBB, rounding to nearest.
+uint32_t packRgb(double r, double g, double b);
+
+// Newell's sum over a face's corners (model space): the face normal times twice its area.
+Vec3 newellSum(const Mesh& mesh, size_t face);
+
+// The unit normal of a face; zero for a degenerate face.
+Vec3 newellNormal(const Mesh& mesh, size_t face);
+
+// v / |v|, or +Z for a zero vector.
+Vec3 safeNormalize(const Vec3& v);
+
+// Blinn–Phong with the light at the eye (so L = V = H): ambient 0.1, diffuse 0.9, white
+// specular 0.3 with exponent 64; `n` and `toEye` unit vectors in one space.
+cv::Vec3f blinnPhong(const cv::Vec3f& base, const Vec3& n, const Vec3& toEye);
+
+// A fixed pseudo-random color per face id (`random` shading), packed.
+uint32_t randomFaceColor(uint32_t faceId);
+
+// The `id` shading color: face id + 1 in 24 bits, R = low byte, G = middle, B = high, packed.
+uint32_t idColor(uint32_t faceId);
+
+}  // namespace zrender
