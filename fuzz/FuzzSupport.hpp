@@ -1,7 +1,8 @@
 #pragma once
 
 // Helpers shared by the fuzz targets: a scratch folder per process, failure reporting, and the
-// checks every InputError message must pass (SPEC §8: one line that names the file first).
+// checks every InputError message must pass (docs/design.md, Errors: one line that names the file
+// first).
 
 #include <unistd.h>
 

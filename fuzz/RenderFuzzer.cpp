@@ -1,7 +1,7 @@
 // Fuzz target: render a fuzzed small model with every algorithm of algorithmNames() and check
-// SPEC §1's guarantee: the FrameBuffer (depth and id of every sample) and the color image of
-// each algorithm are bit-identical to zbuffer's. Algorithms join automatically as they are
-// registered in the factory. The input format is in RenderCase.hpp.
+// The guarantee of docs/design.md, The algorithms: the FrameBuffer (depth and id of every sample)
+// and the color image of each algorithm are bit-identical to zbuffer's. Algorithms join
+// automatically as they are registered in the factory. The input format is in RenderCase.hpp.
 
 #include <cstdint>
 #include <exception>

@@ -157,9 +157,9 @@ void validateScene(const SceneSettings& scene, const std::string& sceneWhere,
               "must differ from target " + formatVec(scene.target) + ", got " + formatVec(eye));
     }
   }
-  // lookAt needs a right vector up x direction; fit keeps both (SPEC §4), so the rule holds
-  // with fit too.
-  // Unit vectors first: the cross product of raw large vectors could overflow.
+  // lookAt needs a right vector up x direction; fit keeps both (docs/design.md, Camera and
+  // transforms), so the rule holds with fit too. Unit vectors first: the cross product of raw large
+  // vectors could overflow.
   const cv::Vec3d right = (direction / cv::norm(direction)).cross(scene.up / cv::norm(scene.up));
   const double sine = cv::norm(right);
   if (!(sine > 1e-9)) {

@@ -32,21 +32,12 @@ constexpr int kJsonStackLimit = 64;
 // Longest excerpt of the offending value quoted after "got".
 constexpr std::size_t kMaxExcerpt = 60;
 
-// Keys of a scene and of its grid (SPEC §3); any other key is warned about and ignored.
+// Keys of a scene and of its grid (docs/design.md, Settings); any other key is warned about and
+// ignored.
 const std::set<std::string> kSceneKeys{"path",  "width",   "height",     "eye",  "target",  "up",
                                        "angle", "axis",    "project",    "fit",  "shading", "msaa",
                                        "cull",  "texture", "background", "grid", "bench"};
 const std::set<std::string> kGridKeys{"count", "spacing"};
-
-bool isFiniteVec(const cv::Vec3d& v) {
-  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
-}
-
-// A direction must survive v / |v|: a zero length, or one that under- or overflows, does not.
-bool isUsableDirection(const cv::Vec3d& v) {
-  const double length = cv::norm(v);
-  return length > 0.0 && std::isfinite(length);
-}
 
 // jsoncpp reports "* Line 3, Column 5\n  Syntax error: ...\n* Line ...": keep the first error and
 // make it one line: "line 3, column 5: Syntax error: ...".

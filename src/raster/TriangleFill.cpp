@@ -135,7 +135,7 @@ ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& pla
   __m256d rowCentre = _mm256_set1_pd(s.minY + 0.5);
   const int blocks = (s.maxX - s.minX) / 4 + 1;
   // Two row loops, kept apart on purpose: merged (one row loop choosing per row, the block
-  // stepping shared) measured 0.45 ms slower on the bunny.
+  // stepping shared) they measured slower (docs/performance.md).
   if (blocks <= 3) {
     // Small triangles (most of a mesh's): every block of the bounds, without a branch.
     const __m256i inBounds[3] = {lanesUpTo(s.minX, s.maxX), lanesUpTo(s.minX + 4, s.maxX),

@@ -17,10 +17,10 @@ std::string formatVec(const Vec3& v) {
   return text;
 }
 
-// fit (SPEC §4), leaving as they are the camera values that s.fitKeeps names: a missing eye
-// is placed along the viewing direction at fit's distance from the target, a missing target
-// is the model's centre, and a missing near or far hugs the model's bounding sphere as seen
-// from the final eye.
+// fit (docs/design.md, Camera and transforms), leaving as they are the camera values that
+// s.fitKeeps names: a missing eye is placed along the viewing direction at fit's distance from the
+// target, a missing target is the model's centre, and a missing near or far hugs the model's
+// bounding sphere as seen from the final eye.
 void fitCamera(const Scene& scene, Camera& cam) {
   const SceneSettings& s = scene.settings;
   const FitKeeps& keep = s.fitKeeps;

@@ -16,7 +16,7 @@ std::vector<Vec3> gridOffsets(const SceneSettings& s) {
   const Grid& g = *s.grid;
   std::vector<Vec3> offsets;
   offsets.reserve(size_t(g.instanceCount()));
-  // Instance (i, j, k) is numbered i fastest, then j, then k (SPEC §3).
+  // Instance (i, j, k) is numbered i fastest, then j, then k (docs/design.md, Settings).
   for (int k = 0; k < g.count[2]; ++k)
     for (int j = 0; j < g.count[1]; ++j)
       for (int i = 0; i < g.count[0]; ++i)

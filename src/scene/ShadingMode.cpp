@@ -6,7 +6,8 @@ namespace zrender {
 
 namespace {
 
-// Same order as the enum and as SPEC §6, so an enum value indexes its name.
+// Same order as the enum and as docs/design.md, Faces, ids and shading, so an enum value indexes
+// its name.
 constexpr ShadingMode kModes[] = {ShadingMode::Normal, ShadingMode::Flat,    ShadingMode::Phong,
                                   ShadingMode::Random, ShadingMode::Texture, ShadingMode::Id,
                                   ShadingMode::Depth};

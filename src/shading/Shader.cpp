@@ -164,7 +164,8 @@ void Shader::shadePixelRows(int endRow) {
       }
     } else if (mode_ == ShadingMode::Id) {
       // A mean of ids is no face's id: an id image holds each pixel's nearest sample, as
-      // --ids does (SPEC §6 over the MSAA mean of §5).
+      // --ids does (docs/design.md: Faces, ids and shading over the MSAA mean of Rasterization
+      // rules).
       const DepthKey* r0 = fb.row(2 * y);
       const DepthKey* r1 = fb.row(2 * y + 1);
       for (int x = 0; x < width; ++x) {
@@ -188,7 +189,8 @@ void Shader::shadePixelRows(int endRow) {
           sum[1] += (c >> 8) & 0xFF;
           sum[2] += (c >> 16) & 0xFF;
         }
-        // The rounded mean of the four samples, background included (SPEC §5).
+        // The rounded mean of the four samples, background included (docs/design.md, Rasterization
+        // rules).
         for (int i = 0; i < 3; ++i) out[3 * x + i] = uchar((sum[i] + 2) / 4);
       }
     }

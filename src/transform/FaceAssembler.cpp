@@ -52,8 +52,8 @@ void setDepthRange(DepthPlane& plane, const Vec3* window, uint32_t count) {
 
 // The plane with `normal` through `point` (samples, samples, depth), clamped to the depth
 // range of the polygon `window`; `ok` is false when the plane is vertical on screen. Inline in
-// every caller: as a call, its result went through the stack (crowd transform, alternated
-// runs: zbuffer 108.9 -> 102.6 ms, octree 15.0 -> 14.0 ms).
+// every caller: as a call, its result went through the stack, which measured slower on every
+// algorithm's transform (docs/performance.md).
 [[gnu::always_inline]] inline DepthPlane planeThrough(const Vec3& normal, const Vec3& point,
                                                       const Vec3* window, uint32_t count,
                                                       bool& ok) {

@@ -15,7 +15,7 @@ namespace {
 
 using Maker = std::function<std::unique_ptr<VisibilityAlgorithm>()>;
 
-// The registry, in SPEC §1 order. A new algorithm adds one line here.
+// The registry, in the order of docs/design.md, The algorithms. A new algorithm adds one line here.
 const std::vector<std::pair<std::string, Maker>>& registry() {
   static const std::vector<std::pair<std::string, Maker>> makers = {
       {"zbuffer", [] { return std::make_unique<ZBufferAlgorithm>(); }},

@@ -12,9 +12,8 @@ void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
   // nearest corner, below which no sample's depth goes (DepthPlane's clamp): for a small
   // triangle as good as any bound. A big one may show only its far part in the image, or
   // cover few samples near its nearest corner: the plane over its sample bounds may then
-  // give a nearer bound, worth its cost there (measured on crowd, whose triangles are a few
-  // samples wide: computed for every triangle it cost the octree 1.3 ms of 24 in raster and
-  // rejected 207 more of 276k triangles).
+  // give a nearer bound, worth its cost there; for every triangle it costs more than it rejects
+  // (docs/performance.md).
   const DepthKey nearestCorner = makeDepthKey(t.plane.minDepth(), t.id);
   bool hidden = pyramid_.occludes(s.minX, s.minY, s.maxX, s.maxY, nearestCorner);
   if (!hidden &&

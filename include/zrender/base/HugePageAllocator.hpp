@@ -13,9 +13,8 @@ namespace zrender {
 // An allocator for big arrays read and written all over (the frame buffer: 26 MB at
 // 1800 x 1800): blocks of 2 MiB and more come straight from mmap, marked for transparent huge
 // pages where the system grants them on request (Debian's default, "madvise"), so that pixel
-// loops that jump around the image miss the TLB less. Measured in alternated runs (raster,
-// medians): bunny z-buffer 7.06 -> 6.77 ms, hierarchical 8.41 -> 8.02, octree 10.44 -> 9.67;
-// crowd octree 23.2 -> 22.4. Straight from mmap because only pages first touched after the
+// loops that jump around the image miss the TLB less (every algorithm's raster measured faster:
+// docs/performance.md). Straight from mmap because only pages first touched after the
 // advice become huge, and malloc may return memory it has touched before. Smaller blocks come
 // from operator new.
 template <class T>

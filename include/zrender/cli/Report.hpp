@@ -11,7 +11,7 @@
 
 namespace zrender {
 
-// The `stats` object of SPEC §7.
+// The `stats` object (docs/design.md, Timings and JSON).
 Json::Value statsToJson(const RenderStats& stats);
 
 // One JSON object on one line, numbers with at most 3 decimals.

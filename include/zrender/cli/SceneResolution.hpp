@@ -10,7 +10,8 @@
 
 namespace zrender {
 
-// Scene options of SPEC §2 that override settings.json; unset ones keep the file's value.
+// Scene options (docs/design.md, Command line) that override settings.json; unset ones keep the
+// file's value.
 struct SceneOverrides {
   std::optional<int> width, height;
   std::optional<Vec3> eye, target, up, axis;
@@ -24,7 +25,7 @@ struct SceneOverrides {
 
 // The scene to render: the settings entry named `scene` (or, when `scene` is a model file and
 // not a key, that model with the defaults and fit), with the overrides applied and validated.
-// Resolves the settings file as SPEC §2 says. Throws InputError.
+// Resolves the settings file as docs/design.md, Command line says. Throws InputError.
 SceneSettings resolveScene(const std::string& scene,
                            const std::optional<std::filesystem::path>& settingsOption,
                            const SceneOverrides& overrides, Warnings& warnings);

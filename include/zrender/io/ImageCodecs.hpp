@@ -3,8 +3,8 @@
 // Image and video files. PNG, which every render writes, goes through libpng directly. The
 // other formats and video go through OpenCV's imgcodecs and videoio, which live in a plugin
 // (libzrender_codecs.so) loaded on first use: on Debian those two libraries pull in about 200
-// shared libraries (GDAL, ffmpeg, ...) whose loading alone cost ~110 ms of CPU per process,
-// more than the whole render of the bunny.
+// shared libraries (GDAL, ffmpeg, ...) whose loading alone costs more CPU per process than the
+// whole render of the bunny (docs/performance.md).
 
 #include <filesystem>
 #include <memory>

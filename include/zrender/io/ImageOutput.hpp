@@ -34,8 +34,8 @@ void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& imag
 // 0..1 for .tif/.exr, CV_16UC1 round(depth * 65535) for .png (near = dark); background is 1.
 cv::Mat depthImage(const FrameBuffer& fb, int sampleScale, bool sixteenBit);
 
-// Face id + 1 in 24 bits per pixel, R = low byte, G = middle, B = high (SPEC §6), as CV_8UC3
-// BGR; 0 is background. With MSAA, each pixel's nearest sample.
+// Face id + 1 in 24 bits per pixel, R = low byte, G = middle, B = high (docs/design.md, Faces, ids
+// and shading), as CV_8UC3 BGR; 0 is background. With MSAA, each pixel's nearest sample.
 cv::Mat idImage(const FrameBuffer& fb, int sampleScale);
 
 }  // namespace zrender

@@ -28,20 +28,18 @@ TileMax tileMaxAvx2(const DepthKey* first, size_t stride, int rows);
 // of the samples below it, so "key > node" proves that a key loses the depth test (tie-break
 // included) at every one of those samples.
 //
-// Tile size, measured (raster ms, 1800 x 1800, bunny / crowd, hierarchical and octree): 4 x 4
-// 17.0 / - and 19.5 / -; 8 x 8 13.6 / 73 and 16.0 / 38; 16 x 16 12.3 / 72 and 14.0 / 38;
-// 32 x 32 13.0 / 76 and 15.7 / 46 (coarse tiles cull less). A small triangle touches fewer
-// 16 x 16 tiles, so there are fewer tiles to check and to rescan after it.
+// Tiles of 16 x 16 samples measured best against 4, 8 and 32 (docs/performance.md): a small
+// triangle touches few of them, so there are few tiles to check and to rescan after it, and
+// coarser tiles cull less.
 //
 // Keeping it up to date without rescanning tiles after every triangle: each tile remembers
 // which sample holds its maximum (for a clear tile, its last sample). Keys only decrease, so
 // the maximum is unchanged until that sample is written; update() checks that one sample per
 // tile a triangle touched, rescans only then, and propagates a change upward only while it
 // changes the parent. A tile that still has clear samples first looks for one on a sparse grid
-// of 16 samples, which then holds the maximum, unchanged: most rescans end there (bunny,
-// hierarchical raster 9.3 -> 8.7 ms). A full rescan takes four keys at a time with AVX2
-// (tileMaxAvx2; bunny, hierarchical raster 8.71 -> 8.48 ms). A stale node (too large) would
-// still be a valid bound.
+// of 16 samples, which then holds the maximum, unchanged: most rescans end there. A full rescan
+// takes four keys at a time with AVX2 (tileMaxAvx2). A stale node (too large) would still be a
+// valid bound.
 //
 // The pyramid also clears the buffer lazily, a row of tiles at a time just before triangles
 // first reach it (prepareRows); finish() clears what no triangle reached. Logically every

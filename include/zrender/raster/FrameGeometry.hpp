@@ -10,7 +10,7 @@ namespace zrender {
 // A face after transform, near/far clipping, snapping and culling: a polygon in fixed-point
 // sample coordinates plus its triangulation. All algorithms read the same FrameGeometry.
 struct ScreenFace {
-  uint32_t id;             // face id (SPEC §6)
+  uint32_t id;             // face id (docs/design.md, Faces, ids and shading)
   uint32_t firstVertex;    // corners in FrameGeometry::vertices, as projected (either winding)
   uint32_t vertexCount;    // >= 3
   uint32_t firstTriangle;  // pieces in FrameGeometry::triangles (at least one), which carry
@@ -29,7 +29,7 @@ struct ScreenTriangle {
   DepthPlane plane;  // window depth over the face, in sample coordinates
 };
 
-// Per-frame counters of the transform stage (SPEC §7 names in comments).
+// Per-frame counters of the transform stage (docs/design.md, Timings and JSON: names in comments).
 struct TransformCounters {
   uint64_t backfaceCulled = 0;  // triangles_backface_culled (faces, counted in triangles)
   uint64_t clippedAway = 0;     // triangles_clipped_away: outside near/far or the view

@@ -1,8 +1,9 @@
 #pragma once
 
-// The rasterization rules of SPEC §5, in one place, used by every visibility algorithm so that
-// they agree bit for bit: sub-pixel snapping, exact integer edge functions with the top-left
-// rule, the depth of a face at a sample centre, and the (depth, face id) ordering.
+// The rasterization rules (docs/design.md, Rasterization rules), in one place, used by every
+// visibility algorithm so that they agree bit for bit: sub-pixel snapping, exact integer edge
+// functions with the top-left rule, the depth of a face at a sample centre, and the (depth, face
+// id) ordering.
 
 #include <algorithm>
 #include <cmath>
@@ -104,8 +105,7 @@ struct SampleRect {
 
 // The samples whose centres may be covered by a triangle with corners a, b, c, inside the
 // width x height image: TriangleSetup::bounds, written with two-operand min and max, which
-// measured faster in the pyramid's tests (crowd, hierarchical transform 133 -> 122 ms) but
-// slower in the z-buffer's set-up.
+// measured faster in the pyramid's tests but slower in the z-buffer's set-up.
 inline SampleRect sampleBounds(const FixedPoint& a, const FixedPoint& b, const FixedPoint& c,
                                int width, int height) {
   SampleRect r;
@@ -202,7 +202,8 @@ struct DepthPlane {
 
 // A sample's visibility as one ordered 64-bit key: the float depth's bits (monotonic for
 // non-negative floats) above the face id. Smaller key wins, so the nearer face wins and at
-// equal depth the smaller id wins (SPEC §5), with a single unsigned comparison.
+// equal depth the smaller id wins (docs/design.md, Rasterization rules), with a single unsigned
+// comparison.
 using DepthKey = uint64_t;
 constexpr uint32_t kBackgroundId = 0xFFFFFFFFu;
 

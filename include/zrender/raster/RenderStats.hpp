@@ -7,7 +7,8 @@
 
 namespace zrender {
 
-// Per-frame counters (SPEC §7 `stats`). Counters an algorithm does not use stay 0.
+// Per-frame counters (docs/design.md, Timings and JSON: `stats`). Counters an algorithm does not
+// use stay 0.
 struct RenderStats {
   uint64_t trianglesBackfaceCulled = 0;
   uint64_t trianglesClippedAway = 0;

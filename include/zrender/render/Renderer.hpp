@@ -18,7 +18,7 @@
 
 namespace zrender {
 
-// Timings of one frame, milliseconds (SPEC §7).
+// Timings of one frame, milliseconds (docs/design.md, Timings and JSON).
 struct FrameTimings {
   double transformMs = 0.0;  // vertices to window-space faces, culling, clipping
   double rasterMs = 0.0;     // window-space faces to filled buffers (visibility and shading)

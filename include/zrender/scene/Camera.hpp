@@ -5,7 +5,8 @@
 
 namespace zrender {
 
-// The per-frame camera: view and projection (SPEC §4) and the image size in samples.
+// The per-frame camera: view and projection (docs/design.md, Camera and transforms) and the image
+// size in samples.
 struct Camera {
   Vec3 eye, target, up;          // world space
   double fovy = 45.0;            // degrees
@@ -16,10 +17,12 @@ struct Camera {
   int width = 0, height = 0;  // pixels
 };
 
-// The camera of a scene, with `fit` applied (SPEC §4): the viewing direction and up are kept,
-// the target moves to the bounding sphere's centre and the eye backs off until the sphere fits
-// the smaller field of view with a 5% margin; near and far hug the sphere. A scene without
-// `eye` looks down -Z.
+// The camera of a scene, with `fit` applied when it is on (docs/design.md, Camera and
+// transforms, and The camera rule): fit moves the target to the model's bounding sphere, the eye
+// along the viewing direction until the sphere fits the smaller field of view with a 5% margin,
+// and near and far to hug the sphere, except for what scene.settings.fitKeeps keeps as given. A
+// scene without `eye` looks down -Z. Throws InputError when what is kept and what fit supplies
+// do not make a camera (a near beyond fit's far, an eye at the model's centre).
 Camera makeCamera(const Scene& scene);
 
 // The camera of turntable frame at `degrees`: the model turned about the camera's up axis

@@ -23,8 +23,8 @@ struct Corner {
 };
 
 // A polygon mesh as written in the file: one face per OBJ `f` line, in file order, so a face's
-// index is its face id (SPEC §6). Faces keep all their corners; triangulation happens later, in
-// window space, so concave faces are right.
+// index is its face id (docs/design.md, Faces, ids and shading). Faces keep all their corners;
+// triangulation happens later, in window space, so concave faces are right.
 struct Mesh {
   std::vector<cv::Vec3d> positions;   // model space
   std::vector<cv::Vec2d> texcoords;   // u right, v up (OBJ convention)

@@ -16,9 +16,10 @@ namespace zrender {
 struct Scene {
   SceneSettings settings;  // after command-line overrides and validation
   std::shared_ptr<const Mesh> mesh;
-  std::vector<Vec3> instanceOffsets;  // grid offset of instance k, model units (SPEC §3)
-  cv::Mat texture;                    // CV_8UC3 (BGR) or empty
-  Vec3 boundsCentre{0, 0, 0};         // bounding sphere of all instances after rotation
+  std::vector<Vec3>
+      instanceOffsets;         // grid offset of instance k, model units (docs/design.md, Settings)
+  cv::Mat texture;             // CV_8UC3 (BGR) or empty
+  Vec3 boundsCentre{0, 0, 0};  // bounding sphere of all instances after rotation
   double boundsRadius = 0.0;
 
   uint32_t instanceCount() const { return uint32_t(instanceOffsets.size()); }

@@ -11,9 +11,9 @@
 
 namespace zrender {
 
-constexpr int kMaxImageSize = 16384;  // pixels, per side (SPEC §2)
+constexpr int kMaxImageSize = 16384;  // pixels, per side (docs/design.md, Command line)
 
-// The model repeated as instances (SPEC §3 `grid`).
+// The model repeated as instances (docs/design.md, Settings: `grid`).
 struct Grid {
   std::array<int, 3> count{1, 1, 1};  // nx, ny, nz >= 1
   cv::Vec3d spacing{0.0, 0.0, 0.0};   // model units
@@ -21,13 +21,13 @@ struct Grid {
 };
 
 // The camera values `fit` leaves as they are. A settings scene's "fit": true and --fit frame
-// the model on their own (SPEC §4: none kept); a model file named on the command line is
-// framed around the camera options the user typed (docs: the camera rule).
+// the model on their own (docs/design.md, Camera and transforms: none kept); a model file named on
+// the command line is framed around the camera options the user typed (docs: the camera rule).
 struct FitKeeps {
   bool eye = false, target = false, near = false, far = false;
 };
 
-// One scene of settings.json with every default of SPEC §3 filled in.
+// One scene of settings.json with every default (docs/design.md, Settings) filled in.
 struct SceneSettings {
   std::string name;
   std::filesystem::path modelPath;  // resolved against the settings file's folder

@@ -21,8 +21,9 @@ Mat4 lookAt(const Vec3& eye, const Vec3& target, const Vec3& up);
 // gluPerspective: view to clip space; fovy in degrees, near and far positive distances.
 Mat4 perspective(double fovyDegrees, double aspect, double near, double far);
 
-// How `fit` frames a bounding sphere of `radius` (SPEC §4): the eye's distance from its centre
-// so the sphere plus a 5% margin fills the smaller field of view, and near and far hugging it.
+// How `fit` frames a bounding sphere of `radius` (docs/design.md, Camera and transforms): the eye's
+// distance from its centre so the sphere plus a 5% margin fills the smaller field of view, and near
+// and far hugging it.
 struct FitView {
   double distance, near, far;
 };
@@ -35,7 +36,7 @@ FitView fitView(double radius, double fovyDegrees, double aspect);
 FitView hugSphere(double centreDepth, double radius);
 
 // Window position of a clip-space point with w > 0, in pixels: x right, y down, row 0 at the
-// top (SPEC §4); z is window depth in 0..1, smaller is nearer.
+// top (docs/design.md, Camera and transforms); z is window depth in 0..1, smaller is nearer.
 // Inline: the transform runs it for every vertex of a frame.
 inline Vec3 clipToWindow(const Vec4& clip, int width, int height) {
   const double invW = 1.0 / clip[3];

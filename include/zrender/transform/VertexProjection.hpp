@@ -7,9 +7,10 @@
 
 namespace zrender {
 
-// The per-vertex part of the transform (SPEC §4–5): model to clip space, the outcode, window
-// coordinates and snapping. A scalar version (the reference) and an AVX2 one, four vertices at
-// a time, doing the same IEEE operations, as the pixel loops do (TriangleFill.hpp).
+// The per-vertex part of the transform (docs/design.md, Camera and transforms and Rasterization
+// rules): model to clip space, the outcode, window coordinates and snapping. A scalar version (the
+// reference) and an AVX2 one, four vertices at a time, doing the same IEEE operations, as the pixel
+// loops do (TriangleFill.hpp).
 
 // Outcode bits of a vertex.
 enum VertexCode : uint32_t {

@@ -7,11 +7,11 @@
 
 namespace zrender {
 
-// The interval (span) scan-line algorithm (SPEC §1 `interval`). Rows are processed from the
-// top; one active edge table holds the edges of every polygon crossing the row, sorted by
-// column. Between consecutive crossings lies a span; an in/out flag per polygon (toggled at its
-// crossings, even-odd) gives the polygons covering the span. The visible polygon of a span is
-// decided from the candidates' depths at the span's ends, and the span is split where their
+// The interval (span) scan-line algorithm (docs/design.md, The algorithms: `interval`). Rows are
+// processed from the top; one active edge table holds the edges of every polygon crossing the row,
+// sorted by column. Between consecutive crossings lies a span; an in/out flag per polygon (toggled
+// at its crossings, even-odd) gives the polygons covering the span. The visible polygon of a span
+// is decided from the candidates' depths at the span's ends, and the span is split where their
 // depths cross; no per-sample depth buffer is used. Where the end values do not prove the order
 // of the rounded float keys (near ties, crossings), samples are decided one by one from the
 // exact keys, so the result is bit-identical to the z-buffer.

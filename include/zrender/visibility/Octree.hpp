@@ -29,22 +29,15 @@ struct OctreeNode {
 // `faces`), and a node's box is the union of the boxes of the faces below it, which may reach
 // past its cell. The alternative, keeping a face that straddles a split plane in the smallest
 // cell that contains it, strands the faces that cross coarse planes in big nodes that are
-// rarely hidden: measured on `crowd` (6.9M faces, cube side 2.2), 3,400 faces would sit in the
-// root and 132,000 in cells of 27 cm or more (a bunny is 16 cm), to be transformed in every
-// frame; with tight bounds every face is tested at leaf granularity, and the build is a radix
-// sort plus one recursive pass over contiguous arrays (no per-node lists).
+// rarely hidden (on `crowd`, thousands of faces in the root and a hundred thousand in cells
+// bigger than a bunny, to be transformed in every frame); with tight bounds every face is tested
+// at leaf granularity, and the build is a radix sort plus one recursive pass over contiguous
+// arrays (no per-node lists).
 //
-// Leaf size, measured on `crowd` with leaves transformed as batches (transformBatch): frame ms,
-// medians of 5 runs alternated in one series, then node tests and faces transformed per frame.
-// At most 16 faces per leaf: 68.0 ms (119K, 381K); 32: 56.3 (46K, 410K); 64: 55.1 (39K, 419K);
-// 128: 51.3 (16K, 475K). A second series: 128: 49.8; 256: 50.4 (13K, 492K); 512: 51.2. Bigger
-// leaves cull a little less but cost fewer node tests, and fewer vertices are computed twice
-// (once per leaf that uses them).
-// Measured again on 2026-11-23, after the per-leaf work got cheaper (medians of 9 alternated
-// runs, --repeat 9, twice): 256 against 128 took bunny's raster 9.29 -> 8.99 and
-// 9.48 -> 8.92 ms, crowd's frame 37.85 -> 37.58 and 38.06 -> 37.94 ms (192: no better than
-// 128 on the bunny; 512: crowd 38.82 ms). `zrender-culling-bound --leaf-faces N` measures
-// what perfect node tests would give at each size.
+// Leaf size (kLeafFaces): bigger leaves cull a little less but cost fewer node tests, and fewer
+// vertices are computed twice (once per leaf that uses them); 256 measured best of the sizes
+// tried (docs/performance.md). `zrender-culling-bound --leaf-faces N` measures what perfect
+// node tests would give at each size.
 class Octree {
  public:
   static constexpr int kMaxDepth = 10;         // 2^10 cells per axis: 30-bit Morton codes

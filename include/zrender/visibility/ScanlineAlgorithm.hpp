@@ -7,13 +7,13 @@
 
 namespace zrender {
 
-// The scan-line z-buffer (SPEC §1 `scanline`): polygons are drawn natively, row by row from the
-// top, from a classified polygon table and a classified edge table bucketed by top row. The
-// active polygon table holds the polygons that cross the current row; each sorts its own active
-// edges by column (a polygon with two, as every triangle has, takes the lesser as the left end
-// instead) and fills its spans pairwise (even-odd) into a one-row depth buffer:
-// the frame buffer's current row itself (copying a separate row buffer out cost ~0.7 ms on the
-// bunny), so only that row is touched while it is built.
+// The scan-line z-buffer (docs/design.md, The algorithms: `scanline`): polygons are drawn natively,
+// row by row from the top, from a classified polygon table and a classified edge table bucketed by
+// top row. The active polygon table holds the polygons that cross the current row; each sorts its
+// own active edges by column (a polygon with two, as every triangle has, takes the lesser as the
+// left end instead) and fills its spans pairwise (even-odd) into a one-row depth buffer: the frame
+// buffer's current row itself (copying a separate row buffer out costs a copy per row), so only
+// that row is touched while it is built.
 class ScanlineAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "scanline"; }

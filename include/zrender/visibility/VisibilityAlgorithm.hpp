@@ -55,7 +55,7 @@ class VisibilityAlgorithm {
   virtual void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) = 0;
 };
 
-// The names --alg accepts, in SPEC §1 order (only those implemented).
+// The names --alg accepts, in the order of docs/design.md, The algorithms (only those implemented).
 const std::vector<std::string>& algorithmNames();
 
 // Throws InputError "unknown algorithm 'x' (choose from: zbuffer, ...)".
