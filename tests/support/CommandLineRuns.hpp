@@ -1,0 +1,26 @@
+#pragma once
+
+// Helpers of the tests that run the built executable on the command line (cli/, e2e/).
+
+#include <string>
+#include <vector>
+
+#include "support/TestSupport.hpp"
+
+namespace zrender::test {
+
+// A square [-1, 1]^2 at z = 0 facing +Z (counter-clockwise seen from +Z), as two triangles:
+// f 1 2 3 (face 0, lower right) and f 1 3 4 (face 1, upper left).
+extern const char* const kSquareObj;
+
+// A settings file with one scene `sq` drawing `model` on a `size` x `size` image (32 x 32 by
+// default), eye (0, 0, 2), project [90, 0, 0.1, 10]; `extra` is appended inside the scene
+// object (", \"msaa\": 4").
+std::string settingsFor(const std::string& model, const std::string& extra = "",
+                        const std::string& size = "32");
+
+// Exit status 2 and one line on stderr, "zrender: error: ...", containing every piece of
+// `mustName`.
+void expectCleanError(const RunResult& r, const std::vector<std::string>& mustName);
+
+}  // namespace zrender::test
