@@ -1,7 +1,8 @@
 #pragma once
 
-// The render fuzz target's input format and its check, shared with tests/HardCasesTest.cpp so
-// that every input the fuzzer found (kept in fuzz/corpus/render) is replayed by the test suite.
+// The render fuzz target's input format and its check, shared with the test suite
+// (tests/visibility/AlgorithmsAgreeTest.cpp), which replays every input the fuzzer found (kept
+// in fuzz/corpus/render).
 //
 // Input: 4 option bytes, then OBJ text.
 //   byte 0: bit 0 culling off, bit 1 MSAA 4, bits 2-4 shading mode, bits 5-6 camera preset
