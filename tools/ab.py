@@ -6,7 +6,7 @@
 Runs `BINARY ZRENDER-ARGS --json` for each binary in turn, N rounds (default 7), so that a
 burst of load on the machine falls on all of them alike, and prints per binary the medians over
 the rounds of transform_ms, raster_ms, raster_ms_min and frame_ms (each run's own values are
-already medians when ZRENDER-ARGS has --repeat). This is how the README's "alternated runs"
+already medians when ZRENDER-ARGS has --repeat). This is how the "alternated runs" of docs/performance.md
 were measured, e.g.:
 
     cp build/zrender /tmp/zrender-before      # then change, rebuild, and:

@@ -2,7 +2,7 @@ cmake_minimum_required(VERSION 3.20)
 # The layering of docs/design.md: each stage of src/ and include/zrender/ includes only itself
 # and the stages it builds on, and the command-line and JSON libraries stay in the stages that
 # read files and options. Run by ctest:
-#   cmake -DROOT=<project folder> -P tests/CheckLayering.cmake
+#   cmake -DROOT=<project folder> -P tests/support/CheckLayering.cmake
 set(below_base "")
 set(below_scene base)
 set(below_raster base)

@@ -1,6 +1,6 @@
 #pragma once
 
-// The C interface of libzrender_codecs.so (src/codecs/OpenCvCodecs.cpp), resolved with dlsym.
+// The C interface of libzrender_codecs.so (src/io/codecs/OpenCvCodecs.cpp), resolved with dlsym.
 // cv::Mat crosses it by pointer: plugin and program share the same libopencv_core.
 
 #include <cstddef>
