@@ -33,9 +33,18 @@ cv::Mat drawBarChart(const std::string& title, const std::vector<ChartGroup>& gr
     for (size_t i = 0; i < g.bars.size(); ++i) {
       const ChartBar& b = g.bars[i];
       const int h = largest > 0 ? int(plotHeight * b.value / largest + 0.5) : 0;
-      cv::rectangle(image, cv::Rect(x, baseline - h, barWidth, std::max(h, 1)),
-                    palette[i % (sizeof palette / sizeof palette[0])], cv::FILLED);
+      const cv::Scalar color = palette[i % (sizeof palette / sizeof palette[0])];
+      cv::rectangle(image, cv::Rect(x, baseline - h, barWidth, std::max(h, 1)), color, cv::FILLED);
       char text[32];
+      if (b.part > 0.0 && largest > 0) {
+        const int p = int(plotHeight * std::min(b.part, b.value) / largest + 0.5);
+        cv::rectangle(image, cv::Rect(x, baseline - p, barWidth, std::max(p, 1)), color * 0.55,
+                      cv::FILLED);
+        std::snprintf(text, sizeof text, b.part < 10 ? "%.2f" : "%.1f", b.part);
+        if (p >= 18)
+          cv::putText(image, text, cv::Point(x + 2, baseline - p + 14), font, 0.42,
+                      cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+      }
       std::snprintf(text, sizeof text, b.value < 10 ? "%.2f" : "%.1f", b.value);
       cv::putText(image, text, cv::Point(x + 2, baseline - h - 8), font, 0.45,
                   cv::Scalar(30, 30, 30), 1, cv::LINE_AA);

@@ -163,13 +163,19 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     const Camera camera =
         turntable ? turntableCamera(baseCamera, 360.0 * frame / frames) : baseCamera;
     if (turntable && tty) err << "\rzrender: frame " << (frame + 1) << "/" << frames << std::flush;
-    std::vector<double> transform, raster, total;
+    std::vector<double> transform, visibility, shade, raster, total;
     for (int i = 0; i < options.repeat; ++i) {
       const FrameTimings t = renderer.renderFrame(camera);
       transform.push_back(t.transformMs);
-      raster.push_back(t.rasterMs);
+      visibility.push_back(t.visibilityMs);
+      shade.push_back(t.shadeMs);
+      raster.push_back(t.rasterMs());
       total.push_back(t.frameMs());
     }
+    FrameTimings medians;
+    medians.transformMs = median(transform);
+    medians.visibilityMs = median(visibility);
+    medians.shadeMs = median(shade);
 
     const double writeStart = nowMs();
     if (video) {
@@ -200,7 +206,9 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
       j["repeat"] = options.repeat;
       j["load_ms"] = loadMs;
       j["prepare_ms"] = renderer.prepareMs();
-      j["transform_ms"] = median(transform);
+      j["transform_ms"] = medians.transformMs;
+      j["visibility_ms"] = medians.visibilityMs;
+      j["shade_ms"] = medians.shadeMs;
       j["raster_ms"] = median(raster);
       j["raster_ms_min"] = *std::min_element(raster.begin(), raster.end());
       j["frame_ms"] = median(total);
@@ -211,7 +219,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
       j["stats"] = statsToJson(renderer.stats());
       out << toJsonLine(j) << "\n";
     }
-    if (options.stats) printStats(renderer.stats(), options.json ? err : out);
+    if (options.stats) printStats(renderer.stats(), medians, options.json ? err : out);
   }
   if (turntable && tty) err << "\r" << std::string(40, ' ') << "\r";
 

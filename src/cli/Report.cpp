@@ -29,7 +29,7 @@ std::string toJsonLine(const Json::Value& value) {
   return Json::writeString(builder, value);
 }
 
-void printStats(const RenderStats& s, std::ostream& out) {
+void printStats(const RenderStats& s, const FrameTimings& times, std::ostream& out) {
   out << "triangles: " << s.trianglesRasterized << " rasterized, " << s.trianglesBackfaceCulled
       << " back-facing, " << s.trianglesClippedAway << " clipped away, " << s.trianglesDegenerate
       << " degenerate, " << s.trianglesHzbCulled << " rejected by the z-pyramid\n";
@@ -40,6 +40,13 @@ void printStats(const RenderStats& s, std::ostream& out) {
     out << " (" << (100.0 * double(s.pixelsWritten) / double(s.pixelsTested)) << "% won)";
   out << "\n";
   for (const auto& [name, value] : s.extra) out << name << ": " << value << "\n";
+  std::ostringstream ms;
+  ms.setf(std::ios::fixed);
+  ms.precision(3);
+  ms << "time: " << times.transformMs << " ms transform, " << times.visibilityMs
+     << " ms visibility, " << times.shadeMs << " ms shading (raster " << times.rasterMs()
+     << " ms, frame " << times.frameMs() << " ms)\n";
+  out << ms.str();
 }
 
 }  // namespace zrender

@@ -65,13 +65,13 @@ CullingBound measureCullingBound(const Scene& scene, const Camera& camera, int r
   for (int i = 0; i < repeat; ++i) {
     const FrameTimings a = all.renderFrame(camera);
     frame.push_back(a.frameMs());
-    raster.push_back(a.rasterMs);
-    visibleRaster.push_back(visibleOnly.renderFrame(camera).rasterMs);
+    raster.push_back(a.rasterMs());
+    visibleRaster.push_back(visibleOnly.renderFrame(camera).rasterMs());
     octreeFrame.push_back(octree.renderFrame(camera).frameMs());
     const FrameTimings l = leafBound.renderFrame(camera);
     leafFrame.push_back(l.frameMs());
     leafTransform.push_back(l.transformMs);
-    leafRaster.push_back(l.rasterMs);
+    leafRaster.push_back(l.rasterMs());
   }
   bound.frameMs = median(frame);
   bound.rasterMs = median(raster);

@@ -35,20 +35,29 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
   geometry_.clear();
   geometry_.width = camera.width * sampleScale_;
   geometry_.height = camera.height * sampleScale_;
-  double frameMs = 0.0;
+  double frameMs = 0.0, shadeMs = 0.0;
   {
     ScopedTimer timer(frameMs);
     source_->beginFrame(camera);
     buffer_.resize(geometry_.width, geometry_.height);
-    shader_.begin(buffer_, camera, sampleScale_, color_, &geometry_);
-    FrameInput input{scene_, camera, *source_, geometry_,
-                     [this](int rows) { shader_.rowsFinal(rows); }};
+    {
+      ScopedTimer shading(shadeMs);
+      shader_.begin(buffer_, camera, sampleScale_, color_, &geometry_);
+    }
+    // Rows finished by the algorithm are shaded while their keys are still in cache; that time
+    // is shading time, not the algorithm's.
+    FrameInput input{scene_, camera, *source_, geometry_, [this, &shadeMs](int rows) {
+                       ScopedTimer shading(shadeMs);
+                       shader_.rowsFinal(rows);
+                     }};
     algorithm_->render(input, buffer_, stats_);
+    ScopedTimer shading(shadeMs);
     shader_.finish();
   }
   FrameTimings timings;
   timings.transformMs = source_->transformMs();
-  timings.rasterMs = frameMs - timings.transformMs;
+  timings.shadeMs = shadeMs;
+  timings.visibilityMs = frameMs - timings.transformMs - shadeMs;
   stats_.trianglesBackfaceCulled = geometry_.counters.backfaceCulled;
   stats_.trianglesClippedAway = geometry_.counters.clippedAway;
   stats_.trianglesDegenerate = geometry_.counters.degenerate;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "zrender/shading/PixelRows.hpp"
 #include "zrender/shading/ShadingModel.hpp"
 
 namespace zrender {
@@ -69,6 +70,8 @@ Shader::Shader(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode
     surface_.emplace(scene, mode);
   else if (mode != ShadingMode::Depth)
     faceColors_.emplace(scene, mode);
+  surfaceRow_ = surfaceRow();
+  packBgr_ = packBgr();
 }
 
 void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color,
@@ -86,6 +89,7 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   background_ = mode_ == ShadingMode::Id
                     ? 0
                     : (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
+  geometry_ = geometry;
   if (faceColors_) faceColors_->begin(modelView_, background_, geometry);
   if (surface_) surface_->begin(modelView_, camera, fb.width(), fb.height());
   perFace_ = scale == 1 && faceColors_;
@@ -117,7 +121,7 @@ void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   finish();
 }
 
-uint32_t Shader::sampleColor(DepthKey key, int x, int y) {
+uint32_t Shader::sampleColor(DepthKey key) {
   const uint32_t id = keyFaceId(key);
   if (id == kBackgroundId) return background_;
   if (mode_ == ShadingMode::Depth) {
@@ -125,7 +129,17 @@ uint32_t Shader::sampleColor(DepthKey key, int x, int y) {
     const double g = 1.0 - (double(keyDepth(key)) - depthLo_) / depthRange_;
     return packRgb(g, g, g);
   }
-  return surface_ ? surface_->color(id, x, y) : faceColors_->color(id);
+  return faceColors_->color(id);
+}
+
+void Shader::colorSampleRow(int y, uint32_t* out) {
+  const DepthKey* row = fb_->row(y);
+  const int width = fb_->width();
+  if (!surface_) {
+    for (int x = 0; x < width; ++x) out[x] = sampleColor(row[x]);
+    return;
+  }
+  surfaceRow_(*surface_, row, width, y, background_, out);
 }
 
 void Shader::shadePixelRows(int endRow) {
@@ -151,17 +165,16 @@ void Shader::shadePixelRows(int endRow) {
     return;
   }
 
+  if (surface_ && geometry_) surface_->setUpFaces(*geometry_, fb.size());
   const int width = color.cols;
+  rowColors_.resize(2 * (size_t(fb.width()) + 16));  // 16: room for a last block past a row
+  uint32_t* colors0 = rowColors_.data();
+  uint32_t* colors1 = colors0 + fb.width() + 16;
   for (int y = firstRow; y < endRow; ++y) {
     uchar* out = color.ptr<uchar>(y);
     if (scale_ == 1) {
-      const DepthKey* row = fb.row(y);
-      for (int x = 0; x < width; ++x) {
-        const uint32_t c = sampleColor(row[x], x, y);
-        out[3 * x + 0] = uchar(c);
-        out[3 * x + 1] = uchar(c >> 8);
-        out[3 * x + 2] = uchar(c >> 16);
-      }
+      colorSampleRow(y, colors0);
+      packBgr_(colors0, width, out);
     } else if (mode_ == ShadingMode::Id) {
       // A mean of ids is no face's id: an id image holds each pixel's nearest sample, as
       // --ids does (docs/design.md: Faces, ids and shading over the MSAA mean of Rasterization
@@ -169,28 +182,26 @@ void Shader::shadePixelRows(int endRow) {
       const DepthKey* r0 = fb.row(2 * y);
       const DepthKey* r1 = fb.row(2 * y + 1);
       for (int x = 0; x < width; ++x) {
-        const uint32_t c = sampleColor(
-            std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}), 2 * x, 2 * y);
+        const uint32_t c =
+            sampleColor(std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}));
         out[3 * x + 0] = uchar(c);
         out[3 * x + 1] = uchar(c >> 8);
         out[3 * x + 2] = uchar(c >> 16);
       }
     } else {
-      const DepthKey* r0 = fb.row(2 * y);
-      const DepthKey* r1 = fb.row(2 * y + 1);
+      colorSampleRow(2 * y, colors0);
+      colorSampleRow(2 * y + 1, colors1);
       for (int x = 0; x < width; ++x) {
+        const uint32_t cs[4] = {colors0[2 * x], colors0[2 * x + 1], colors1[2 * x],
+                                colors1[2 * x + 1]};
         uint32_t sum[3] = {0, 0, 0};
-        const uint32_t cs[4] = {sampleColor(r0[2 * x], 2 * x, 2 * y),
-                                sampleColor(r0[2 * x + 1], 2 * x + 1, 2 * y),
-                                sampleColor(r1[2 * x], 2 * x, 2 * y + 1),
-                                sampleColor(r1[2 * x + 1], 2 * x + 1, 2 * y + 1)};
         for (uint32_t c : cs) {
           sum[0] += c & 0xFF;
           sum[1] += (c >> 8) & 0xFF;
           sum[2] += (c >> 16) & 0xFF;
         }
-        // The rounded mean of the four samples, background included (docs/design.md, Rasterization
-        // rules).
+        // The rounded mean of the four samples, background included (docs/design.md,
+        // Rasterization rules).
         for (int i = 0; i < 3; ++i) out[3 * x + i] = uchar((sum[i] + 2) / 4);
       }
     }

@@ -34,16 +34,6 @@ Vec3 safeNormalize(const Vec3& v) {
   return len > 0.0 ? v / len : Vec3(0, 0, 1);
 }
 
-cv::Vec3f blinnPhong(const cv::Vec3f& base, const Vec3& n, const Vec3& toEye) {
-  const double diffuse = std::max(0.0, n.dot(toEye));
-  const double specular = std::pow(diffuse, 64.0);
-  const double ambient = 0.1;
-  cv::Vec3f c;
-  for (int i = 0; i < 3; ++i)
-    c[i] = float(base[i] * (ambient + (1.0 - ambient) * diffuse) + 0.3 * specular);
-  return c;
-}
-
 uint32_t randomFaceColor(uint32_t faceId) {
   // splitmix32-style finalizer: neighbouring ids get unrelated colors.
   uint32_t h = faceId * 0x9E3779B9u + 0x7F4A7C15u;

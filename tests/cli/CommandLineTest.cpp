@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <regex>
 #include <set>
 #include <string>
 
@@ -72,9 +73,10 @@ TEST(CommandLine, JsonHasEveryDocumentedField) {
   const Json::Value j = parseJson(r.out);
   ASSERT_TRUE(j.isObject());
   EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1);
-  for (const char* key : {"scene", "algorithm", "width", "height", "msaa", "faces", "triangles",
-                          "load_ms", "prepare_ms", "transform_ms", "raster_ms", "raster_ms_min",
-                          "frame_ms", "write_ms", "total_ms", "peak_rss_mb", "stats"})
+  for (const char* key :
+       {"scene", "algorithm", "width", "height", "msaa", "faces", "triangles", "load_ms",
+        "prepare_ms", "transform_ms", "visibility_ms", "shade_ms", "raster_ms", "raster_ms_min",
+        "frame_ms", "write_ms", "total_ms", "peak_rss_mb", "stats"})
     EXPECT_TRUE(j.isMember(key)) << key;
   for (const char* key : {"triangles_backface_culled", "triangles_clipped_away",
                           "triangles_rasterized", "triangles_hzb_culled", "octree_nodes_visited",
@@ -103,6 +105,9 @@ TEST(CommandLine, OneFrameHasFrameEqualToTransformPlusRaster) {
   // docs/design.md, Timings and JSON: frame_ms = transform_ms + raster_ms. The three are printed
   // rounded to 0.001 ms each, so the printed sum may be off by one unit of the last place.
   EXPECT_NEAR(j["frame_ms"].asDouble(), j["transform_ms"].asDouble() + j["raster_ms"].asDouble(),
+              0.0011);
+  // raster_ms = visibility_ms + shade_ms: the algorithm's work and the shading pass.
+  EXPECT_NEAR(j["raster_ms"].asDouble(), j["visibility_ms"].asDouble() + j["shade_ms"].asDouble(),
               0.0011);
   EXPECT_EQ(j["frame_ms_min"].asDouble(), j["frame_ms"].asDouble());
   EXPECT_EQ(j["raster_ms_min"].asDouble(), j["raster_ms"].asDouble());
@@ -181,11 +186,17 @@ TEST(CommandLine, StatsInWords) {
   // back one, all tested and none written; 1024 / 1508 = 67.9045% of the tests win.
   const auto z = runZrender({"sq", "--stats", "-o", dir.file("z.png")}, dir.path);
   ASSERT_EQ(z.status, 0) << z.err;
-  EXPECT_EQ(z.out,
-            "triangles: 4 rasterized, 0 back-facing, 0 clipped away, 0 degenerate, 0 rejected "
-            "by the z-pyramid\n"
-            "octree: 0 nodes visited, 0 rejected\n"
-            "samples: 1508 depth tests, 1024 written (67.9045% won)\n");
+  const std::string counters =
+      "triangles: 4 rasterized, 0 back-facing, 0 clipped away, 0 degenerate, 0 rejected "
+      "by the z-pyramid\n"
+      "octree: 0 nodes visited, 0 rejected\n"
+      "samples: 1508 depth tests, 1024 written (67.9045% won)\n";
+  ASSERT_EQ(z.out.substr(0, counters.size()), counters);
+  // Then the frame's times, which vary from run to run: only their form is fixed.
+  const std::regex times(
+      "time: [0-9.]+ ms transform, [0-9.]+ ms visibility, [0-9.]+ ms shading \\(raster "
+      "[0-9.]+ ms, frame [0-9.]+ ms\\)\n");
+  EXPECT_TRUE(std::regex_match(z.out.substr(counters.size()), times)) << z.out;
   // The pyramid's tiles under the back square are all covered by the front one, so both of
   // its triangles are rejected before any sample test. With --json the words go to stderr.
   const auto h = runZrender(

@@ -1,13 +1,31 @@
-#include "zrender/shading/SurfaceShading.hpp"
+#include "support/ReferenceShading.hpp"
 
 #include <algorithm>
 #include <cmath>
 
+#include "zrender/shading/FaceColors.hpp"
 #include "zrender/shading/ShadingModel.hpp"
 
-namespace zrender {
+namespace zrender::test {
 
-SurfaceShading::SurfaceShading(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode) {
+namespace {
+
+// Blinn–Phong with the light at the eye (so L = V = H): ambient 0.1, diffuse 0.9, white
+// specular 0.3 with exponent 64; `n` and `toEye` unit vectors in one space.
+cv::Vec3f blinnPhong(const cv::Vec3f& base, const Vec3& n, const Vec3& toEye) {
+  const double diffuse = std::max(0.0, n.dot(toEye));
+  const double specular = std::pow(diffuse, 64.0);
+  const double ambient = 0.1;
+  cv::Vec3f c;
+  for (int i = 0; i < 3; ++i)
+    c[i] = float(base[i] * (ambient + (1.0 - ambient) * diffuse) + 0.3 * specular);
+  return c;
+}
+
+}  // namespace
+
+ReferenceSurfaceShading::ReferenceSurfaceShading(const Scene& scene, ShadingMode mode)
+    : scene_(scene), mode_(mode) {
   const Mesh& mesh = *scene.mesh;
   faceNormals_.resize(mesh.faceCount());
   for (size_t f = 0; f < mesh.faceCount(); ++f) faceNormals_[f] = newellNormal(mesh, f);
@@ -24,8 +42,8 @@ SurfaceShading::SurfaceShading(const Scene& scene, ShadingMode mode) : scene_(sc
   }
 }
 
-void SurfaceShading::begin(const std::vector<Mat4>& modelView, const Camera& camera,
-                           int widthSamples, int heightSamples) {
+void ReferenceSurfaceShading::begin(const std::vector<Mat4>& modelView, const Camera& camera,
+                                    int widthSamples, int heightSamples) {
   modelView_ = &modelView;
   if (cache_.size() != scene_.faceCount()) {
     cache_.assign(scene_.faceCount(), Cached());
@@ -43,7 +61,7 @@ void SurfaceShading::begin(const std::vector<Mat4>& modelView, const Camera& cam
   rayOriginY_ = 1.0 / camera.projection(1, 1);
 }
 
-uint32_t SurfaceShading::faceShadeIndex(uint32_t faceId) {
+uint32_t ReferenceSurfaceShading::faceShadeIndex(uint32_t faceId) {
   Cached& entry = cache_[faceId];
   if (entry.stamp == frame_) return entry.index;
   const Mesh& mesh = *scene_.mesh;
@@ -84,7 +102,7 @@ uint32_t SurfaceShading::faceShadeIndex(uint32_t faceId) {
   return entry.index;
 }
 
-cv::Vec3f SurfaceShading::sampleTexture(const cv::Vec2d& uv) const {
+cv::Vec3f ReferenceSurfaceShading::sampleTexture(const cv::Vec2d& uv) const {
   // Bilinear, wrapping; v = 0 is the bottom row of the image (OBJ convention).
   const cv::Mat& t = scene_.texture;
   const double u = uv[0] - std::floor(uv[0]), v = uv[1] - std::floor(uv[1]);
@@ -106,7 +124,7 @@ cv::Vec3f SurfaceShading::sampleTexture(const cv::Vec2d& uv) const {
   return rgb;
 }
 
-uint32_t SurfaceShading::color(uint32_t faceId, int x, int y) {
+uint32_t ReferenceSurfaceShading::color(uint32_t faceId, int x, int y) {
   const Vec3 dir(rayOriginX_ + (x + 0.5) * rayScaleX_, rayOriginY_ - (y + 0.5) * rayScaleY_, -1.0);
   const FaceShade& fs = faceShade_[faceShadeIndex(faceId)];
   const Vec3* pos = cornerPos_.data() + fs.first;
@@ -157,4 +175,60 @@ uint32_t SurfaceShading::color(uint32_t faceId, int x, int y) {
   return (q(rgb[0]) << 16) | (q(rgb[1]) << 8) | q(rgb[2]);
 }
 
-}  // namespace zrender
+cv::Mat referenceImage(const Scene& scene, const Camera& camera, const FrameBuffer& fb,
+                       int sampleScale) {
+  const ShadingMode mode = scene.settings.shading;
+  std::vector<Mat4> modelView;
+  for (uint32_t k = 0; k < scene.instanceCount(); ++k)
+    modelView.push_back(camera.view * scene.modelMatrix(k));
+  const auto& bg = scene.settings.background;
+  const uint32_t background =
+      mode == ShadingMode::Id ? 0 : (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | bg[2];
+  const bool surfaceMode = mode == ShadingMode::Phong || mode == ShadingMode::Texture ||
+                           (mode == ShadingMode::Normal && scene.mesh->hasNormals());
+  ReferenceSurfaceShading surface(scene, mode);
+  surface.begin(modelView, camera, fb.width(), fb.height());
+  FaceColors faceColors(scene, mode);
+  faceColors.begin(modelView, background, nullptr);
+  float depthLo = 1.0f, depthHi = 0.0f;
+  for (size_t i = 0; i < fb.size(); ++i) {
+    if (keyFaceId(fb.data()[i]) == kBackgroundId) continue;
+    depthLo = std::min(depthLo, keyDepth(fb.data()[i]));
+    depthHi = std::max(depthHi, keyDepth(fb.data()[i]));
+  }
+  const double depthRange = depthHi > depthLo ? double(depthHi) - depthLo : 1.0;
+  const auto sampleColor = [&](DepthKey key, int x, int y) {
+    const uint32_t id = keyFaceId(key);
+    if (id == kBackgroundId) return background;
+    if (mode == ShadingMode::Depth) {
+      const double g = 1.0 - (double(keyDepth(key)) - depthLo) / depthRange;
+      return packRgb(g, g, g);
+    }
+    return surfaceMode ? surface.color(id, x, y) : faceColors.color(id);
+  };
+  cv::Mat image(fb.height() / sampleScale, fb.width() / sampleScale, CV_8UC3);
+  for (int y = 0; y < image.rows; ++y) {
+    for (int x = 0; x < image.cols; ++x) {
+      uint32_t c = 0;
+      if (sampleScale == 1) {
+        c = sampleColor(fb.row(y)[x], x, y);
+      } else if (mode == ShadingMode::Id) {
+        const DepthKey* r0 = fb.row(2 * y);
+        const DepthKey* r1 = fb.row(2 * y + 1);
+        c = sampleColor(std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}), 0, 0);
+      } else {
+        uint32_t sum[3] = {0, 0, 0};
+        for (int s = 0; s < 4; ++s) {
+          const int sx = 2 * x + s % 2, sy = 2 * y + s / 2;
+          const uint32_t sc = sampleColor(fb.row(sy)[sx], sx, sy);
+          for (int i = 0; i < 3; ++i) sum[i] += (sc >> (8 * i)) & 0xFF;
+        }
+        c = ((sum[2] + 2) / 4) << 16 | ((sum[1] + 2) / 4) << 8 | (sum[0] + 2) / 4;
+      }
+      image.at<cv::Vec3b>(y, x) = cv::Vec3b(uchar(c), uchar(c >> 8), uchar(c >> 16));
+    }
+  }
+  return image;
+}
+
+}  // namespace zrender::test

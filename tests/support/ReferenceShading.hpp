@@ -5,19 +5,24 @@
 
 #include <opencv2/core.hpp>
 
+#include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Scene.hpp"
 #include "zrender/scene/ShadingMode.hpp"
 
-namespace zrender {
+namespace zrender::test {
+
+// The shader zrender had before its float, vector one (docs/design.md, Faces, ids and
+// shading): kept as the reference that the fast shader must stay within 1 (of 255) of.
 
 // The color of a sample in the modes that interpolate attributes over a face: `phong`,
-// `texture`, and `normal` for a model with vertex normals. Attributes are interpolated
-// perspective-correctly by intersecting the sample's view ray with the face in view space (a
-// polygon: the fan triangle from its first corner that contains the hit).
-class SurfaceShading {
+// `texture`, and `normal` for a model with vertex normals, all in double. Attributes are
+// interpolated perspective-correctly by intersecting the sample's view ray with the face in
+// view space (Moeller-Trumbore; a polygon: the fan triangle from its first corner that
+// contains the hit, else the one it misses least).
+class ReferenceSurfaceShading {
  public:
-  SurfaceShading(const Scene& scene, ShadingMode mode);
+  ReferenceSurfaceShading(const Scene& scene, ShadingMode mode);
 
   // Starts a frame: `modelView` per instance (kept by reference until the next begin()), for a
   // buffer of `widthSamples` x `heightSamples` seen through `camera`.
@@ -56,4 +61,11 @@ class SurfaceShading {
   std::vector<cv::Vec2d> cornerUv_;
 };
 
-}  // namespace zrender
+// The image (CV_8UC3, BGR, pixels) that the reference shader makes of `fb` (samples;
+// `sampleScale` 2 for MSAA 4) of `scene` seen through `camera`, as Shader::shade does: the
+// surface modes by ReferenceSurfaceShading, the others by FaceColors and the depth formula;
+// with MSAA the rounded mean of a pixel's four samples, except in id mode (its nearest).
+cv::Mat referenceImage(const Scene& scene, const Camera& camera, const FrameBuffer& fb,
+                       int sampleScale);
+
+}  // namespace zrender::test

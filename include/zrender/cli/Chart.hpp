@@ -7,10 +7,13 @@
 
 namespace zrender {
 
-// One bar of a chart: a label under it and a value (milliseconds) written above it.
+// One bar of a chart: a label under it and a value (milliseconds) written above it; `part` (a
+// share of the value: the algorithm's own work in a frame) is drawn darker from the baseline,
+// its value written inside.
 struct ChartBar {
   std::string label;
   double value = 0.0;
+  double part = 0.0;
 };
 
 // A group of bars sharing a caption (one scene of the bench table).

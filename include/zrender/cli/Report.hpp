@@ -8,6 +8,7 @@
 
 #include "zrender/base/Median.hpp"
 #include "zrender/raster/RenderStats.hpp"
+#include "zrender/render/Renderer.hpp"
 
 namespace zrender {
 
@@ -17,7 +18,8 @@ Json::Value statsToJson(const RenderStats& stats);
 // One JSON object on one line, numbers with at most 3 decimals.
 std::string toJsonLine(const Json::Value& value);
 
-// The statistics in words, one line per counter (--stats).
-void printStats(const RenderStats& stats, std::ostream& out);
+// The statistics in words, one line per counter, then the frame's times (--stats; with
+// --repeat, the median of each).
+void printStats(const RenderStats& stats, const FrameTimings& times, std::ostream& out);
 
 }  // namespace zrender

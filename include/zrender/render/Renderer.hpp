@@ -20,9 +20,11 @@ namespace zrender {
 
 // Timings of one frame, milliseconds (docs/design.md, Timings and JSON).
 struct FrameTimings {
-  double transformMs = 0.0;  // vertices to window-space faces, culling, clipping
-  double rasterMs = 0.0;     // window-space faces to filled buffers (visibility and shading)
-  double frameMs() const { return transformMs + rasterMs; }
+  double transformMs = 0.0;   // vertices to window-space faces, culling, clipping
+  double visibilityMs = 0.0;  // window-space faces to the key buffer: the algorithm's own work
+  double shadeMs = 0.0;       // the key buffer to colors
+  double rasterMs() const { return visibilityMs + shadeMs; }
+  double frameMs() const { return transformMs + rasterMs(); }
 };
 
 // Renders frames of one scene with one algorithm: the transform (a FaceTransformer, which the

@@ -11,14 +11,16 @@
 #include "zrender/scene/Scene.hpp"
 #include "zrender/scene/ShadingMode.hpp"
 #include "zrender/shading/FaceColors.hpp"
-#include "zrender/shading/SurfaceShading.hpp"
+#include "zrender/shading/PixelRows.hpp"
+#include "zrender/shading/SurfaceSetup.hpp"
 
 namespace zrender {
 
 // Deferred shading (docs/design.md, Faces, ids and shading): turns the visibility buffer into
 // colors. A sample's color depends only on its face id, its position and the scene, never on
 // the algorithm that found it, so identical visibility buffers give identical images. Colors
-// come from FaceColors (one per face) or SurfaceShading (per sample); with MSAA 4 a pixel is
+// come from FaceColors (one per face) or, for runs of a face's samples, SurfaceSetup and
+// SurfaceKernel; with MSAA 4 a pixel is
 // the rounded mean of its four samples' colors, background included, except in id mode, where
 // it is its nearest sample's.
 class Shader {
@@ -43,13 +45,18 @@ class Shader {
   void finish();
 
  private:
-  uint32_t sampleColor(DepthKey key, int x, int y);  // 0x00RRGGBB; x, y in samples
-  void shadePixelRows(int endRow);                   // rows [shadedRows_, endRow) of the image
+  // The packed color (0x00RRGGBB) of a sample, in the modes without a surface.
+  uint32_t sampleColor(DepthKey key);
+  // The packed colors of sample row y, into out[0, buffer width).
+  void colorSampleRow(int y, uint32_t* out);
+  void shadePixelRows(int endRow);  // rows [shadedRows_, endRow) of the image
 
   const Scene& scene_;
   ShadingMode mode_;
-  std::optional<FaceColors> faceColors_;   // one color per face
-  std::optional<SurfaceShading> surface_;  // attributes interpolated per sample
+  std::optional<FaceColors> faceColors_;  // one color per face
+  std::optional<SurfaceSetup> surface_;   // attributes interpolated per sample
+  SurfaceRowFunction surfaceRow_;
+  PackBgrFunction packBgr_;
 
   // Per frame.
   const FrameBuffer* fb_ = nullptr;
@@ -57,10 +64,12 @@ class Shader {
   int scale_ = 1;
   int shadedRows_ = 0;  // pixel rows colored so far
   uint32_t background_ = 0;
-  bool perFace_ = false;  // one sample per pixel, one color per face
-  float depthLo_ = 0.0f;  // depth mode: the frame's depth range
+  const FrameGeometry* geometry_ = nullptr;  // the frame's faces, when given
+  bool perFace_ = false;                     // one sample per pixel, one color per face
+  float depthLo_ = 0.0f;                     // depth mode: the frame's depth range
   double depthRange_ = 1.0;
-  std::vector<Mat4> modelView_;  // per instance
+  std::vector<Mat4> modelView_;      // per instance
+  std::vector<uint32_t> rowColors_;  // two sample rows of packed colors
 };
 
 }  // namespace zrender

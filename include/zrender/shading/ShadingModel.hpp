@@ -24,10 +24,6 @@ Vec3 newellNormal(const Mesh& mesh, size_t face);
 // v / |v|, or +Z for a zero vector.
 Vec3 safeNormalize(const Vec3& v);
 
-// Blinn–Phong with the light at the eye (so L = V = H): ambient 0.1, diffuse 0.9, white
-// specular 0.3 with exponent 64; `n` and `toEye` unit vectors in one space.
-cv::Vec3f blinnPhong(const cv::Vec3f& base, const Vec3& n, const Vec3& toEye);
-
 // A fixed pseudo-random color per face id (`random` shading), packed.
 uint32_t randomFaceColor(uint32_t faceId);
 

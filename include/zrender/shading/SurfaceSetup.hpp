@@ -1,0 +1,86 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "zrender/raster/FrameGeometry.hpp"
+#include "zrender/scene/Camera.hpp"
+#include "zrender/scene/Scene.hpp"
+#include "zrender/scene/ShadingMode.hpp"
+#include "zrender/shading/SurfaceKernel.hpp"
+
+namespace zrender {
+
+// The per-face part of the modes that interpolate attributes over a face (`normal` with vertex
+// normals, `phong`, `texture`): once per frame for each face that shows, in double, the planes
+// and corner attributes that SurfaceKernel's per-sample loops read in float. Only faces in the
+// buffer are set up, on first sight, so hidden faces cost nothing (docs/design.md, Shading).
+class SurfaceSetup {
+ public:
+  SurfaceSetup(const Scene& scene, ShadingMode mode);
+
+  // Starts a frame: `modelView` per instance (kept by reference until the next begin()), for a
+  // buffer of `widthSamples` x `heightSamples` seen through `camera`.
+  void begin(const std::vector<Mat4>& modelView, const Camera& camera, int widthSamples,
+             int heightSamples);
+  const SurfaceFrame& frame() const { return frame_; }
+
+  // The surface of face `faceId`, set up on the first call for it in the frame; valid until
+  // the next call.
+  const FaceSurface& surface(uint32_t faceId) {
+    Cached& entry = cache_[faceId];
+    if (entry.stamp != stamp_) {
+      entry.stamp = stamp_;
+      entry.index = setUp(faceId);
+    }
+    return surfaces_[entry.index];
+  }
+  const SurfaceFan* fans(const FaceSurface& face) const { return fans_.data() + face.firstFan; }
+
+  // Sets up every face of `geometry` (the frame's faces, which hold those in the buffer) in a
+  // batch, each face's data fetched into cache a few faces ahead, instead of one cache miss
+  // after another as rows meet the faces; only when the faces are few for the buffer's
+  // `samples` (a grid's many hidden faces are set up on first sight). Once per frame.
+  void setUpFaces(const FrameGeometry& geometry, size_t samples);
+
+ private:
+  uint32_t setUp(uint32_t faceId);
+
+  // What setting a face up reads, gathered per mesh face at construction: a face met for the
+  // first time is far in memory from the last one, and its corners' positions, normals and
+  // texture coordinates would be as many cache misses in the mesh's own arrays.
+  struct CornerData {
+    Vec3 position;     // model space
+    cv::Vec3f normal;  // model space: the vertex normal, the smooth one, or the face's
+    cv::Vec2f uv;      // (0, 0) unless every corner of the face has one
+  };
+  struct FaceData {
+    cv::Vec3f geometric;  // the face's own normal (Newell), model space
+    cv::Vec3f base;       // diffuse RGB: the material's Kd, else 0.8 gray
+    bool textured;        // every corner has texture coordinates and there is a texture
+  };
+
+  const Scene& scene_;
+  ShadingMode mode_;
+  std::vector<CornerData> corners_;  // per mesh corner (Mesh::corners order)
+  std::vector<FaceData> faces_;      // per mesh face
+  std::vector<uint32_t> texels_;     // the texture as 0x00RRGGBB, row 0 at the top
+
+  // Per frame.
+  const std::vector<Mat4>* modelView_ = nullptr;
+  SurfaceFrame frame_;
+  double rayOriginX_ = 0.0, rayOriginY_ = 0.0, rayScaleX_ = 0.0, rayScaleY_ = 0.0;
+  int width_ = 0, height_ = 0;  // samples
+  struct Cached {
+    uint32_t stamp = 0;  // frame in which the entry was set up
+    uint32_t index = 0;  // into surfaces_
+  };
+  uint32_t stamp_ = 0;
+  std::vector<Cached> cache_;
+  std::vector<FaceSurface> surfaces_;
+  std::vector<SurfaceFan> fans_;
+  std::vector<Vec3> cornerPosition_, cornerNormal_;  // scratch: one face's corners, view space
+  bool batchDone_ = false;                           // setUpFaces() ran in this frame
+};
+
+}  // namespace zrender

@@ -1,0 +1,207 @@
+#include "zrender/shading/SurfaceSetup.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "zrender/shading/ShadingModel.hpp"
+
+namespace zrender {
+
+SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode) {
+  const Mesh& mesh = *scene.mesh;
+  std::vector<Vec3> faceNormals(mesh.faceCount());
+  for (size_t f = 0; f < mesh.faceCount(); ++f) faceNormals[f] = newellNormal(mesh, f);
+  std::vector<Vec3> smoothNormals;  // per position, when the model has no vn
+  if ((mode == ShadingMode::Phong || mode == ShadingMode::Texture) && !mesh.hasNormals()) {
+    // Smooth normals: area-weighted sum of the normals of the faces around each position.
+    smoothNormals.assign(mesh.positions.size(), Vec3(0, 0, 0));
+    for (size_t f = 0; f < mesh.faceCount(); ++f) {
+      const Vec3 weighted = newellSum(mesh, f);
+      const Corner* c = mesh.faceCorners(f);
+      for (uint32_t i = 0; i < mesh.cornerCount(f); ++i)
+        smoothNormals[size_t(c[i].position)] += weighted;
+    }
+    for (Vec3& n : smoothNormals) n = safeNormalize(n);
+  }
+  const bool texture = mode == ShadingMode::Texture && !scene.texture.empty();
+  corners_.resize(mesh.corners.size());
+  faces_.resize(mesh.faceCount());
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    const Corner* c = mesh.faceCorners(f);
+    const uint32_t n = mesh.cornerCount(f);
+    bool allNormals = mesh.hasNormals(), allUvs = mesh.hasTexcoords();
+    for (uint32_t i = 0; i < n; ++i) {
+      allNormals &= c[i].normal >= 0;
+      allUvs &= c[i].texcoord >= 0;
+    }
+    for (uint32_t i = 0; i < n; ++i) {
+      CornerData& d = corners_[mesh.faceStart[f] + i];
+      d.position = mesh.positions[size_t(c[i].position)];
+      const Vec3& normal = allNormals               ? mesh.normals[size_t(c[i].normal)]
+                           : !smoothNormals.empty() ? smoothNormals[size_t(c[i].position)]
+                                                    : faceNormals[f];
+      d.normal = cv::Vec3f(normal);
+      d.uv = allUvs ? cv::Vec2f(mesh.texcoords[size_t(c[i].texcoord)]) : cv::Vec2f(0, 0);
+    }
+    FaceData& face = faces_[f];
+    face.geometric = cv::Vec3f(faceNormals[f]);
+    const int32_t material = f < mesh.faceMaterial.size() ? mesh.faceMaterial[f] : -1;
+    face.base =
+        material >= 0 ? mesh.materials[size_t(material)].diffuse : cv::Vec3f(0.8f, 0.8f, 0.8f);
+    face.textured = texture && allUvs;
+  }
+  const cv::Mat& t = scene.texture;
+  if (mode == ShadingMode::Texture && !t.empty()) {
+    // A copy of the first column after the last and of the first row after the last, so that
+    // bilinear filtering reads texel pairs without wrapping (SurfaceKernel's sampleTexture).
+    const size_t stride = size_t(t.cols) + 1;
+    texels_.resize(stride * (size_t(t.rows) + 1));
+    for (int y = 0; y <= t.rows; ++y)
+      for (int x = 0; x <= t.cols; ++x) {
+        const cv::Vec3b& bgr = t.at<cv::Vec3b>(y % t.rows, x % t.cols);
+        texels_[size_t(y) * stride + size_t(x)] =
+            uint32_t(bgr[2]) << 16 | uint32_t(bgr[1]) << 8 | bgr[0];
+      }
+    frame_.texels = texels_.data();
+    frame_.textureWidth = t.cols;
+    frame_.textureHeight = t.rows;
+  }
+  frame_.mode = mode;
+}
+
+void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camera, int widthSamples,
+                         int heightSamples) {
+  modelView_ = &modelView;
+  width_ = widthSamples;
+  height_ = heightSamples;
+  if (cache_.size() != scene_.faceCount()) {
+    cache_.assign(scene_.faceCount(), Cached());
+    stamp_ = 0;
+  }
+  ++stamp_;
+  batchDone_ = false;
+  surfaces_.clear();
+  fans_.clear();
+  // The view-space ray through a sample centre: x_view / -z_view = x_ndc / P00.
+  rayScaleX_ = 2.0 / widthSamples / camera.projection(0, 0);
+  rayScaleY_ = 2.0 / heightSamples / camera.projection(1, 1);
+  rayOriginX_ = -1.0 / camera.projection(0, 0);
+  rayOriginY_ = 1.0 / camera.projection(1, 1);
+  frame_.rayOriginX = float(rayOriginX_);
+  frame_.rayOriginY = float(rayOriginY_);
+  frame_.rayScaleX = float(rayScaleX_);
+  frame_.rayScaleY = float(rayScaleY_);
+}
+
+void SurfaceSetup::setUpFaces(const FrameGeometry& geometry, size_t samples) {
+  if (batchDone_) return;
+  batchDone_ = true;
+  const std::vector<ScreenFace>& faces = geometry.faces;
+  if (faces.size() * 16 > samples) return;
+  const Mesh& mesh = *scene_.mesh;
+  const uint32_t nf = uint32_t(mesh.faceCount());
+  constexpr size_t kAhead = 8;
+  const auto prefetch = [&](uint32_t faceId) {
+    const uint32_t local = faceId % nf;
+    __builtin_prefetch(&faces_[local]);
+    __builtin_prefetch(&cache_[faceId]);
+    const char* first = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local]);
+    const char* end = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local + 1]);
+    for (const char* p = first; p < end; p += 64) __builtin_prefetch(p);
+  };
+  for (size_t i = 0; i < std::min(kAhead, faces.size()); ++i) prefetch(faces[i].id);
+  for (size_t i = 0; i < faces.size(); ++i) {
+    if (i + kAhead < faces.size()) prefetch(faces[i + kAhead].id);
+    surface(faces[i].id);
+  }
+}
+
+uint32_t SurfaceSetup::setUp(uint32_t faceId) {
+  const Mesh& mesh = *scene_.mesh;
+  const uint32_t nf = uint32_t(mesh.faceCount());
+  const uint32_t instance = faceId / nf, local = faceId % nf;
+  const Mat4& mv = (*modelView_)[instance];
+  const uint32_t n = mesh.cornerCount(local);
+  const CornerData* corners = corners_.data() + mesh.faceStart[local];
+  const FaceData& data = faces_[local];
+  cornerPosition_.resize(n);
+  cornerNormal_.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    cornerPosition_[i] = transformPoint(mv, corners[i].position);
+    cornerNormal_[i] = safeNormalize(transformDirection(mv, Vec3(corners[i].normal)));
+  }
+  const Vec3& p0 = cornerPosition_[0];
+
+  FaceSurface face;
+  face.flip = transformDirection(mv, Vec3(data.geometric)).dot(-p0) < 0.0;
+  for (int i = 0; i < 3; ++i) face.base[i] = data.base[i] * 255.0f;
+  face.textured = data.textured;
+  // The planes' origin: the sample of the first corner when it lies in front of the eye
+  // (clamped to the image), else the image's centre. From the face alone, so that it is the
+  // same whichever sample meets the face first.
+  face.originX = width_ / 2;
+  face.originY = height_ / 2;
+  if (p0[2] < 0.0) {
+    const double x = (p0[0] / -p0[2] - rayOriginX_) / rayScaleX_ - 0.5;
+    const double y = (rayOriginY_ - p0[1] / -p0[2]) / rayScaleY_ - 0.5;
+    if (std::isfinite(x) && std::isfinite(y)) {
+      face.originX = int32_t(std::clamp(std::round(x), 0.0, width_ - 1.0));
+      face.originY = int32_t(std::clamp(std::round(y), 0.0, height_ - 1.0));
+    }
+  }
+  // The ray through a sample is affine in its position, dir = (rayOriginX + (x + 0.5)
+  // rayScaleX, rayOriginY - (y + 0.5) rayScaleY, -1), so for a fan triangle with edges e1, e2
+  // from p0, the intersection's weights u = dir.(e2 x -p0) / dir.(e2 x e1) and v = dir.(-p0 x
+  // e1) / dir.(e2 x e1) (Moeller and Trumbore's, rearranged) are ratios of affine functions of
+  // the sample: three planes.
+  const Vec3 origin(rayOriginX_ + (face.originX + 0.5) * rayScaleX_,
+                    rayOriginY_ - (face.originY + 0.5) * rayScaleY_, -1.0);
+  face.firstFan = uint32_t(fans_.size());
+  face.fanCount = std::max<uint32_t>(n, 3) - 2;
+  for (uint32_t j = 1; j + 1 < std::max<uint32_t>(n, 3); ++j) {
+    SurfaceFan fan{};
+    const uint32_t corner[3] = {0, std::min(j, n - 1), std::min(j + 1, n - 1)};
+    const Vec3 e1 = cornerPosition_[corner[1]] - p0, e2 = cornerPosition_[corner[2]] - p0;
+    const Vec3 toEye = -p0;
+    const Vec3 vectors[3] = {e2.cross(e1), e2.cross(toEye), toEye.cross(e1)};
+    fan.degenerate = vectors[0] == Vec3(0, 0, 0);
+    double planes[8][3];  // a, b, c of den, pu, pv, then the normal's and uv's over den
+    double largest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      planes[k][0] = vectors[k][0] * rayScaleX_;
+      planes[k][1] = -vectors[k][1] * rayScaleY_;
+      planes[k][2] = vectors[k].dot(origin);
+      for (double value : planes[k]) largest = std::max(largest, std::abs(value));
+    }
+    // An attribute A over den: A0 den + (Aj - A0) pu + (Aj+1 - A0) pv, coefficient by
+    // coefficient.
+    double attribute[5][3];  // the normal's x, y, z and u, v at corners 0, j, j + 1
+    for (int i = 0; i < 3; ++i) {
+      for (int a = 0; a < 3; ++a) attribute[a][i] = cornerNormal_[corner[i]][a];
+      for (int a = 0; a < 2; ++a) attribute[3 + a][i] = corners[corner[i]].uv[a];
+    }
+    for (int k = 0; k < 5; ++k)
+      for (int c = 0; c < 3; ++c)
+        planes[3 + k][c] = attribute[k][0] * planes[0][c] +
+                           (attribute[k][1] - attribute[k][0]) * planes[1][c] +
+                           (attribute[k][2] - attribute[k][0]) * planes[2][c];
+    // A common factor leaves the ratios as they are and keeps the floats in range.
+    const double scale = largest > 0.0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
+    SamplePlane* out[8] = {&fan.den,       &fan.pu,        &fan.pv,    &fan.normal[0],
+                           &fan.normal[1], &fan.normal[2], &fan.uv[0], &fan.uv[1]};
+    for (int k = 0; k < 8; ++k) {
+      out[k]->a = float(planes[k][0] * scale);
+      out[k]->b = float(planes[k][1] * scale);
+      out[k]->c = float(planes[k][2] * scale);
+    }
+    for (int i = 0; i < 3; ++i) {
+      for (int a = 0; a < 3; ++a) fan.cornerNormal[i][a] = float(attribute[a][i]);
+      for (int a = 0; a < 2; ++a) fan.cornerUv[i][a] = float(attribute[3 + a][i]);
+    }
+    fans_.push_back(fan);
+  }
+  surfaces_.push_back(face);
+  return uint32_t(surfaces_.size() - 1);
+}
+
+}  // namespace zrender

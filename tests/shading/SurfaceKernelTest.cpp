@@ -1,0 +1,182 @@
+// SurfaceKernel: the vector versions (AVX2, eight lanes; AVX-512, sixteen) give the scalar
+// reference's bits, on random faces (samples inside and outside the fan triangle, degenerate
+// fans, infinite and NaN planes, every mode, a texture read across its wrap) and on the rows
+// of real frames (background, polygons, runs of every length).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "support/TestSupport.hpp"
+#include "zrender/base/CpuFeatures.hpp"
+#include "zrender/io/SceneFiles.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/shading/SurfaceKernel.hpp"
+#include "zrender/shading/SurfaceSetup.hpp"
+
+namespace zrender {
+namespace {
+
+using RunFunction = void (*)(const SurfaceFrame&, const FaceSurface&, const SurfaceFan*, int, int,
+                             int, uint32_t*);
+using RowFunction = void (*)(SurfaceSetup&, const DepthKey*, int, int, uint32_t, uint32_t*);
+
+struct Version {
+  std::string name;
+  RunFunction run;
+  RowFunction row;
+};
+
+// The vector versions this CPU runs.
+std::vector<Version> vectorVersions() {
+  std::vector<Version> versions;
+  if (cpuHasAvx2()) versions.push_back({"avx2", shadeSurfaceRunAvx2, shadeSurfaceRowAvx2});
+  if (cpuHasAvx512()) versions.push_back({"avx512", shadeSurfaceRunAvx512, shadeSurfaceRowAvx512});
+  return versions;
+}
+
+// A random plane value: mostly ordinary, sometimes zero, huge, infinite or NaN.
+float randomCoefficient(std::mt19937& rng, float scale) {
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  switch (std::uniform_int_distribution<int>(0, 40)(rng)) {
+    case 0:
+      return 0.0f;
+    case 1:
+      return std::numeric_limits<float>::infinity();
+    case 2:
+      return std::numeric_limits<float>::quiet_NaN();
+    case 3:
+      return 1e30f * u(rng);
+    default:
+      return scale * u(rng);
+  }
+}
+
+SamplePlane randomPlane(std::mt19937& rng) {
+  return SamplePlane{randomCoefficient(rng, 0.05f), randomCoefficient(rng, 0.05f),
+                     randomCoefficient(rng, 1.0f)};
+}
+
+TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
+  const std::vector<Version> versions = vectorVersions();
+  if (versions.empty()) GTEST_SKIP() << "this CPU has no AVX2";
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  // A 5 x 3 texture stored as SurfaceFrame says: a copy of the first column and row after the
+  // last.
+  const int tw = 5, th = 3;
+  std::vector<uint32_t> texels(size_t(tw + 1) * (th + 1));
+  for (int y = 0; y <= th; ++y)
+    for (int x = 0; x <= tw; ++x) texels[size_t(y) * (tw + 1) + x] = rng() & 0xFFFFFFu;
+  for (int y = 0; y <= th; ++y) texels[size_t(y) * (tw + 1) + tw] = texels[size_t(y) * (tw + 1)];
+  for (int x = 0; x <= tw; ++x) texels[size_t(th) * (tw + 1) + x] = texels[x];
+
+  int outside = 0, inside = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    SurfaceFrame frame;
+    const ShadingMode modes[3] = {ShadingMode::Normal, ShadingMode::Phong, ShadingMode::Texture};
+    frame.mode = modes[trial % 3];
+    frame.rayOriginX = -1.0f + 0.2f * unit(rng);
+    frame.rayOriginY = 1.0f - 0.2f * unit(rng);
+    frame.rayScaleX = 0.004f * unit(rng);
+    frame.rayScaleY = 0.004f * unit(rng);
+    frame.texels = texels.data();
+    frame.textureWidth = tw;
+    frame.textureHeight = th;
+    FaceSurface face;
+    face.originX = int(rng() % 500);
+    face.originY = int(rng() % 500);
+    face.fanCount = 1;
+    face.flip = rng() % 2;
+    face.textured = frame.mode == ShadingMode::Texture && rng() % 4 != 0;
+    for (float& c : face.base) c = 255.0f * unit(rng);
+    SurfaceFan fan{};
+    // Mostly a face whose weights are those of a triangle around the origin, so that runs
+    // cross its edges; sometimes any planes at all.
+    if (trial % 4 != 0) {
+      const float scale = 0.002f + 0.05f * unit(rng);
+      fan.den = SamplePlane{0.001f * (unit(rng) - 0.5f), 0.001f * (unit(rng) - 0.5f),
+                            (rng() % 2 ? 1.0f : -1.0f) * (0.5f + unit(rng))};
+      fan.pu = SamplePlane{scale, 0.3f * scale * (unit(rng) - 0.5f), fan.den.c * unit(rng)};
+      fan.pv = SamplePlane{-0.3f * scale * unit(rng), scale, fan.den.c * unit(rng) * 0.5f};
+    } else {
+      fan.den = randomPlane(rng), fan.pu = randomPlane(rng), fan.pv = randomPlane(rng);
+    }
+    for (SamplePlane& p : fan.normal) p = randomPlane(rng);
+    for (SamplePlane& p : fan.uv)
+      p = SamplePlane{4.0f * unit(rng) - 2.0f, 0.1f * unit(rng), 8.0f * unit(rng) - 4.0f};
+    if (trial % 97 == 0) fan.uv[0] = randomPlane(rng);
+    for (auto& n : fan.cornerNormal)
+      for (float& c : n) c = 2.0f * unit(rng) - 1.0f;
+    for (auto& uv : fan.cornerUv)
+      for (float& c : uv) c = 6.0f * unit(rng) - 3.0f;
+    fan.degenerate = trial % 13 == 0;
+
+    const int count = 1 + int(rng() % 70);
+    const int x = face.originX + int(rng() % 120) - 60, y = face.originY + int(rng() % 120) - 60;
+    std::vector<uint32_t> expected(static_cast<size_t>(count)), got(expected.size() + 16);
+    shadeSurfaceRunScalar(frame, face, &fan, x, y, count, expected.data());
+    for (const Version& v : versions) {
+      v.run(frame, face, &fan, x, y, count, got.data());
+      for (int i = 0; i < count; ++i)
+        ASSERT_EQ(got[size_t(i)], expected[size_t(i)])
+            << v.name << ", trial " << trial << ", sample " << i << " of " << count;
+    }
+    // Whether the sample lies inside the triangle, as the kernel decides it (den's sign out).
+    const float sy = float(y - face.originY), sx = float(x - face.originX);
+    const float den = fan.den.c + fan.den.b * sy + fan.den.a * sx;
+    const float u = (fan.pu.c + fan.pu.b * sy + fan.pu.a * sx) / den;
+    const float w = (fan.pv.c + fan.pv.b * sy + fan.pv.a * sx) / den;
+    (u >= 0 && w >= 0 && u + w <= 1 ? inside : outside) += 1;
+  }
+  // Both branches of the kernel are reached many times.
+  EXPECT_GT(inside, 2000);
+  EXPECT_GT(outside, 2000);
+}
+
+// The rows of a rendered frame, colored by every version from the same SurfaceSetup.
+void expectRowsAgree(const Scene& scene, const std::string& label) {
+  Renderer renderer(scene, "zbuffer");
+  const Camera camera = makeCamera(scene);
+  renderer.renderFrame(camera);
+  const FrameBuffer& fb = renderer.buffer();
+  std::vector<Mat4> modelView;
+  for (uint32_t k = 0; k < scene.instanceCount(); ++k)
+    modelView.push_back(camera.view * scene.modelMatrix(k));
+  SurfaceSetup setup(scene, scene.settings.shading);
+  setup.begin(modelView, camera, fb.width(), fb.height());
+  std::vector<uint32_t> expected(size_t(fb.width()) + 16), got(expected.size());
+  const uint32_t background = 0x123456;
+  for (int y = 0; y < fb.height(); ++y) {
+    shadeSurfaceRowScalar(setup, fb.row(y), fb.width(), y, background, expected.data());
+    for (const Version& v : vectorVersions()) {
+      v.row(setup, fb.row(y), fb.width(), y, background, got.data());
+      for (int x = 0; x < fb.width(); ++x)
+        ASSERT_EQ(got[size_t(x)], expected[size_t(x)])
+            << label << ", " << v.name << ", sample " << x << ", " << y;
+    }
+  }
+  EXPECT_GT(test::coveredSamples(fb), 1000u) << label;
+}
+
+TEST(SurfaceKernel, VectorRowsGiveTheScalarBitsOnRealFrames) {
+  if (vectorVersions().empty()) GTEST_SKIP() << "this CPU has no AVX2";
+  for (const ShadingMode mode : {ShadingMode::Normal, ShadingMode::Phong, ShadingMode::Texture}) {
+    for (const std::string name : {"spot", "shapes", "teapot"}) {
+      SceneSettings s = test::projectScene(name);
+      if (!std::filesystem::exists(s.modelPath)) continue;
+      s.width = s.height = 160;
+      s.shading = mode;
+      s.cull = name != "teapot";
+      Warnings warnings;
+      expectRowsAgree(loadScene(s, warnings), name + " " + shadingModeName(mode));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace zrender
