@@ -22,7 +22,7 @@ import statistics
 import subprocess
 import sys
 
-FIELDS = ("transform_ms", "raster_ms", "raster_ms_min", "frame_ms")
+FIELDS = ("transform_ms", "visibility_ms", "shade_ms", "raster_ms", "raster_ms_min", "frame_ms")
 
 
 def fail(message):
@@ -63,11 +63,13 @@ def main():
         for binary in options.binaries:
             result = run_once(binary, args)
             for field in FIELDS:
-                values[binary][field].append(result[field])
+                if field in result:  # builds from before visibility_ms and shade_ms lack them
+                    values[binary][field].append(result[field])
     width = max(len(b) for b in options.binaries)
     print(f"medians of {options.runs} alternated runs of: {' '.join(args)}")
     for binary in options.binaries:
-        cells = "  ".join(f"{f} {statistics.median(values[binary][f]):8.3f}" for f in FIELDS)
+        cells = "  ".join(f"{f} {statistics.median(values[binary][f]):8.3f}" for f in FIELDS
+                          if values[binary][f])
         print(f"{binary:<{width}}  {cells}")
 
 

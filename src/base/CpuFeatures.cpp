@@ -3,11 +3,7 @@
 namespace zrender {
 
 bool cpuHasAvx2() {
-  return __builtin_cpu_supports("avx2");
-}
-
-bool cpuHasAvx512() {
-  return __builtin_cpu_supports("avx512f");
+  return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
 }
 
 }  // namespace zrender

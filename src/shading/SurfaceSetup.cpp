@@ -52,14 +52,15 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
   }
   const cv::Mat& t = scene.texture;
   if (mode == ShadingMode::Texture && !t.empty()) {
-    // A copy of the first column after the last and of the first row after the last, so that
-    // bilinear filtering reads texel pairs without wrapping (SurfaceKernel's sampleTexture).
-    const size_t stride = size_t(t.cols) + 1;
-    texels_.resize(stride * (size_t(t.rows) + 1));
-    for (int y = 0; y <= t.rows; ++y)
-      for (int x = 0; x <= t.cols; ++x) {
-        const cv::Vec3b& bgr = t.at<cv::Vec3b>(y % t.rows, x % t.cols);
-        texels_[size_t(y) * stride + size_t(x)] =
+    // Framed by a copy of the last column and row before the first and of the first after the
+    // last (SurfaceFrame), so that bilinear filtering reads texel pairs without wrapping.
+    const int stride = t.cols + 2;
+    texels_.resize(size_t(stride) * size_t(t.rows + 2));
+    for (int y = 0; y < t.rows + 2; ++y)
+      for (int x = 0; x < stride; ++x) {
+        const cv::Vec3b& bgr =
+            t.at<cv::Vec3b>((y + t.rows - 1) % t.rows, (x + t.cols - 1) % t.cols);
+        texels_[size_t(y) * size_t(stride) + size_t(x)] =
             uint32_t(bgr[2]) << 16 | uint32_t(bgr[1]) << 8 | bgr[0];
       }
     frame_.texels = texels_.data();
@@ -87,8 +88,9 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   rayScaleY_ = 2.0 / heightSamples / camera.projection(1, 1);
   rayOriginX_ = -1.0 / camera.projection(0, 0);
   rayOriginY_ = 1.0 / camera.projection(1, 1);
-  frame_.rayOriginX = float(rayOriginX_);
-  frame_.rayOriginY = float(rayOriginY_);
+  // At sample centres, as SurfaceFrame has it.
+  frame_.rayOriginX = float(rayOriginX_ + 0.5 * rayScaleX_);
+  frame_.rayOriginY = float(rayOriginY_ - 0.5 * rayScaleY_);
   frame_.rayScaleX = float(rayScaleX_);
   frame_.rayScaleY = float(rayScaleY_);
 }
@@ -133,7 +135,11 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
   const Vec3& p0 = cornerPosition_[0];
 
   FaceSurface face;
-  face.flip = transformDirection(mv, Vec3(data.geometric)).dot(-p0) < 0.0;
+  // A back face seen (--no-cull) is lit from its own side: its normals turned to the eye.
+  const bool flip =
+      mode_ != ShadingMode::Normal && transformDirection(mv, Vec3(data.geometric)).dot(-p0) < 0.0;
+  if (flip)
+    for (Vec3& normal : cornerNormal_) normal = -normal;
   for (int i = 0; i < 3; ++i) face.base[i] = data.base[i] * 255.0f;
   face.textured = data.textured;
   // The planes' origin: the sample of the first corner when it lies in front of the eye
@@ -185,14 +191,15 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
         planes[3 + k][c] = attribute[k][0] * planes[0][c] +
                            (attribute[k][1] - attribute[k][0]) * planes[1][c] +
                            (attribute[k][2] - attribute[k][0]) * planes[2][c];
-    // A common factor leaves the ratios as they are and keeps the floats in range.
-    const double scale = largest > 0.0 && std::isfinite(largest) ? 1.0 / largest : 1.0;
-    SamplePlane* out[8] = {&fan.den,       &fan.pu,        &fan.pv,    &fan.normal[0],
-                           &fan.normal[1], &fan.normal[2], &fan.uv[0], &fan.uv[1]};
-    for (int k = 0; k < 8; ++k) {
-      out[k]->a = float(planes[k][0] * scale);
-      out[k]->b = float(planes[k][1] * scale);
-      out[k]->c = float(planes[k][2] * scale);
+    // A common factor leaves the ratios as they are: one that keeps the floats in range, with
+    // the sign that makes den positive where the ray meets the plane in front of the eye (the
+    // ray t dir meets it where t = p0.(e2 x e1) / dir.(e2 x e1)).
+    const double sign = p0.dot(vectors[0]) < 0.0 ? -1.0 : 1.0;
+    const double scale = (largest > 0.0 && std::isfinite(largest) ? 1.0 / largest : 1.0) * sign;
+    for (int k = 0; k < kSurfacePlanes; ++k) {  // planes[] is in SurfacePlane order
+      fan.a[k] = float(planes[k][0] * scale);
+      fan.b[k] = float(planes[k][1] * scale);
+      fan.c[k] = float(planes[k][2] * scale);
     }
     for (int i = 0; i < 3; ++i) {
       for (int a = 0; a < 3; ++a) fan.cornerNormal[i][a] = float(attribute[a][i]);

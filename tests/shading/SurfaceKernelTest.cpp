@@ -1,7 +1,7 @@
-// SurfaceKernel: the vector versions (AVX2, eight lanes; AVX-512, sixteen) give the scalar
-// reference's bits, on random faces (samples inside and outside the fan triangle, degenerate
-// fans, infinite and NaN planes, every mode, a texture read across its wrap) and on the rows
-// of real frames (background, polygons, runs of every length).
+// SurfaceKernel: the vector version (AVX2, eight lanes) gives the scalar reference's bits, on
+// random faces (samples inside and outside the fan triangle, degenerate fans, infinite and NaN
+// planes, every mode, a texture read across its wrap) and on the rows of real frames (background,
+// polygons, runs of every length).
 
 #include <gtest/gtest.h>
 
@@ -35,7 +35,6 @@ struct Version {
 std::vector<Version> vectorVersions() {
   std::vector<Version> versions;
   if (cpuHasAvx2()) versions.push_back({"avx2", shadeSurfaceRunAvx2, shadeSurfaceRowAvx2});
-  if (cpuHasAvx512()) versions.push_back({"avx512", shadeSurfaceRunAvx512, shadeSurfaceRowAvx512});
   return versions;
 }
 
@@ -56,9 +55,14 @@ float randomCoefficient(std::mt19937& rng, float scale) {
   }
 }
 
-SamplePlane randomPlane(std::mt19937& rng) {
-  return SamplePlane{randomCoefficient(rng, 0.05f), randomCoefficient(rng, 0.05f),
-                     randomCoefficient(rng, 1.0f)};
+// Plane k of the fan: a, b, c.
+void setPlane(SurfaceFan& fan, int k, float a, float b, float c) {
+  fan.a[k] = a, fan.b[k] = b, fan.c[k] = c;
+}
+
+void setRandomPlane(SurfaceFan& fan, int k, std::mt19937& rng) {
+  setPlane(fan, k, randomCoefficient(rng, 0.05f), randomCoefficient(rng, 0.05f),
+           randomCoefficient(rng, 1.0f));
 }
 
 TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
@@ -66,14 +70,16 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
   if (versions.empty()) GTEST_SKIP() << "this CPU has no AVX2";
   std::mt19937 rng(2026);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  // A 5 x 3 texture stored as SurfaceFrame says: a copy of the first column and row after the
-  // last.
+  // A 5 x 3 texture stored as SurfaceFrame says: framed by a copy of the last column and row
+  // before the first and of the first after the last.
   const int tw = 5, th = 3;
-  std::vector<uint32_t> texels(size_t(tw + 1) * (th + 1));
-  for (int y = 0; y <= th; ++y)
-    for (int x = 0; x <= tw; ++x) texels[size_t(y) * (tw + 1) + x] = rng() & 0xFFFFFFu;
-  for (int y = 0; y <= th; ++y) texels[size_t(y) * (tw + 1) + tw] = texels[size_t(y) * (tw + 1)];
-  for (int x = 0; x <= tw; ++x) texels[size_t(th) * (tw + 1) + x] = texels[x];
+  std::vector<uint32_t> texture(size_t(tw) * th);
+  for (uint32_t& texel : texture) texel = rng() & 0xFFFFFFu;
+  std::vector<uint32_t> texels(size_t(tw + 2) * (th + 2));
+  for (int y = 0; y < th + 2; ++y)
+    for (int x = 0; x < tw + 2; ++x)
+      texels[size_t(y) * (tw + 2) + x] =
+          texture[size_t((y + th - 1) % th) * tw + (x + tw - 1) % tw];
 
   int outside = 0, inside = 0;
   for (int trial = 0; trial < 20000; ++trial) {
@@ -91,7 +97,6 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
     face.originX = int(rng() % 500);
     face.originY = int(rng() % 500);
     face.fanCount = 1;
-    face.flip = rng() % 2;
     face.textured = frame.mode == ShadingMode::Texture && rng() % 4 != 0;
     for (float& c : face.base) c = 255.0f * unit(rng);
     SurfaceFan fan{};
@@ -99,17 +104,17 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
     // cross its edges; sometimes any planes at all.
     if (trial % 4 != 0) {
       const float scale = 0.002f + 0.05f * unit(rng);
-      fan.den = SamplePlane{0.001f * (unit(rng) - 0.5f), 0.001f * (unit(rng) - 0.5f),
-                            (rng() % 2 ? 1.0f : -1.0f) * (0.5f + unit(rng))};
-      fan.pu = SamplePlane{scale, 0.3f * scale * (unit(rng) - 0.5f), fan.den.c * unit(rng)};
-      fan.pv = SamplePlane{-0.3f * scale * unit(rng), scale, fan.den.c * unit(rng) * 0.5f};
+      const float c = (rng() % 8 != 0 ? 1.0f : -1.0f) * (0.5f + unit(rng));
+      setPlane(fan, kDen, 0.001f * (unit(rng) - 0.5f), 0.001f * (unit(rng) - 0.5f), c);
+      setPlane(fan, kPu, scale, 0.3f * scale * (unit(rng) - 0.5f), c * unit(rng));
+      setPlane(fan, kPv, -0.3f * scale * unit(rng), scale, c * unit(rng) * 0.5f);
     } else {
-      fan.den = randomPlane(rng), fan.pu = randomPlane(rng), fan.pv = randomPlane(rng);
+      for (int k : {kDen, kPu, kPv}) setRandomPlane(fan, k, rng);
     }
-    for (SamplePlane& p : fan.normal) p = randomPlane(rng);
-    for (SamplePlane& p : fan.uv)
-      p = SamplePlane{4.0f * unit(rng) - 2.0f, 0.1f * unit(rng), 8.0f * unit(rng) - 4.0f};
-    if (trial % 97 == 0) fan.uv[0] = randomPlane(rng);
+    for (int k : {kNormalX, kNormalY, kNormalZ}) setRandomPlane(fan, k, rng);
+    for (int k : {kTextureU, kTextureV})
+      setPlane(fan, k, 4.0f * unit(rng) - 2.0f, 0.1f * unit(rng), 8.0f * unit(rng) - 4.0f);
+    if (trial % 97 == 0) setRandomPlane(fan, kTextureU, rng);
     for (auto& n : fan.cornerNormal)
       for (float& c : n) c = 2.0f * unit(rng) - 1.0f;
     for (auto& uv : fan.cornerUv)
@@ -117,7 +122,8 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
     fan.degenerate = trial % 13 == 0;
 
     const int count = 1 + int(rng() % 70);
-    const int x = face.originX + int(rng() % 120) - 60, y = face.originY + int(rng() % 120) - 60;
+    const int x = std::max(0, face.originX + int(rng() % 120) - 60);
+    const int y = face.originY + int(rng() % 120) - 60;
     std::vector<uint32_t> expected(static_cast<size_t>(count)), got(expected.size() + 16);
     shadeSurfaceRunScalar(frame, face, &fan, x, y, count, expected.data());
     for (const Version& v : versions) {
@@ -126,15 +132,14 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
         ASSERT_EQ(got[size_t(i)], expected[size_t(i)])
             << v.name << ", trial " << trial << ", sample " << i << " of " << count;
     }
-    // Whether the sample lies inside the triangle, as the kernel decides it (den's sign out).
+    // Whether the run's first sample lies inside the triangle, about as the kernel decides it.
     const float sy = float(y - face.originY), sx = float(x - face.originX);
-    const float den = fan.den.c + fan.den.b * sy + fan.den.a * sx;
-    const float u = (fan.pu.c + fan.pu.b * sy + fan.pu.a * sx) / den;
-    const float w = (fan.pv.c + fan.pv.b * sy + fan.pv.a * sx) / den;
-    (u >= 0 && w >= 0 && u + w <= 1 ? inside : outside) += 1;
+    const auto plane = [&](int k) { return fan.c[k] + fan.b[k] * sy + fan.a[k] * sx; };
+    const float den = plane(kDen), u = plane(kPu), w = plane(kPv);
+    (den > 0 && u >= 0 && w >= 0 && u + w <= den ? inside : outside) += 1;
   }
   // Both branches of the kernel are reached many times.
-  EXPECT_GT(inside, 2000);
+  EXPECT_GT(inside, 1000);
   EXPECT_GT(outside, 2000);
 }
 

@@ -9,29 +9,40 @@ namespace zrender {
 
 // The per-sample part of the shading modes that interpolate attributes over a face (`normal`
 // with vertex normals, `phong`, `texture`), in float: a scalar version (the reference) and an
-// AVX2 one, eight samples at a time, doing the same IEEE operations in the same order, so
-// that they give the same bits (tested on random faces). docs/design.md, Shading, gives the
-// formulas and why float is close enough to the double-precision reference shader.
-
-// An affine function of the sample position (x, y): (c + b (y - originY)) + a (x - originX),
-// with the origin of the face it belongs to (FaceSurface). From a nearby origin, the float
-// terms stay small; the first sum is the same along a row.
-struct SamplePlane {
-  float a = 0.0f, b = 0.0f, c = 0.0f;
-};
+// AVX2 one, eight samples at a time, doing the same IEEE operations in the same order (fused
+// multiply-adds included), so that they give the same bits (tested on random faces).
+// docs/design.md, Shading, gives the formulas and why float is close enough to the
+// double-precision shader the tests keep as the reference.
 
 // A fan triangle of a face (corners 0, j and j + 1). The view ray through a sample meets the
 // triangle's plane at (1 - u - v) p0 + u pj + v pj+1 with u = pu / den and v = pv / den, three
-// planes; an attribute interpolated there, (1 - u - v) A0 + u Aj + v Aj+1, is then
+// planes, signed so that den > 0 where the ray meets the plane in front of the eye. An
+// attribute interpolated there, (1 - u - v) A0 + u Aj + v Aj+1, is then
 // (A0 den + (Aj - A0) pu + (Aj+1 - A0) pv) / den, a plane over den (the attribute over w, in
 // the usual words). A sample inside the triangle reads the attributes' planes; one outside it
 // (beyond the face's snapped edge) gets the attributes of the nearest point of the triangle,
 // from the corners'.
+//
+// A plane is an affine function of the sample position relative to its face's origin
+// (FaceSurface), fma(a, sx, fma(b, sy, c)): from a nearby origin the float terms stay small,
+// and the inner term is the same along a row. The eight planes' terms are stored side by side,
+// so that a row's eight inner terms are one vector operation.
+enum SurfacePlane {
+  kDen,
+  kPu,
+  kPv,
+  kNormalX,  // the normal over den, view space; turned to the eye's side for a back face in
+  kNormalY,  // the lit modes
+  kNormalZ,
+  kTextureU,  // the texture coordinates over den
+  kTextureV,
+  kSurfacePlanes
+};
 struct SurfaceFan {
-  SamplePlane den, pu, pv;
-  SamplePlane normal[3];     // the normal over den, view space
-  SamplePlane uv[2];         // the texture coordinates over den
-  float cornerNormal[3][3];  // unit normals of corners 0, j, j + 1, view space
+  alignas(32) float a[kSurfacePlanes];
+  alignas(32) float b[kSurfacePlanes];
+  alignas(32) float c[kSurfacePlanes];
+  float cornerNormal[3][3];  // unit normals of corners 0, j, j + 1, as the normal's planes
   float cornerUv[3][2];      // their texture coordinates (0 where the face has none)
   bool degenerate;           // zero area: corner 0's attributes everywhere
 };
@@ -41,18 +52,18 @@ struct FaceSurface {
   int32_t originX = 0, originY = 0;  // samples: where its planes are evaluated from
   uint32_t firstFan = 0, fanCount = 0;
   float base[3] = {204.0f, 204.0f, 204.0f};  // diffuse RGB, 0..255 (material Kd times 255)
-  bool flip = false;                         // a back face seen: lit from its other side
   bool textured = false;                     // base color from the texture at the sample's uv
 };
 
 // What every sample of a frame shares.
 struct SurfaceFrame {
   ShadingMode mode = ShadingMode::Phong;  // Normal, Phong or Texture
-  // The view-space ray through sample (x, y): (rayOriginX + (x + 0.5) rayScaleX,
-  // rayOriginY - (y + 0.5) rayScaleY, -1).
+  // The view-space ray through the centre of sample (x, y) is (fma(x, rayScaleX, rayOriginX),
+  // fma(y, -rayScaleY, rayOriginY), -1).
   float rayOriginX = 0.0f, rayOriginY = 0.0f, rayScaleX = 0.0f, rayScaleY = 0.0f;
-  // The texture: 0x00RRGGBB, row 0 at the top (v = 1), rows of textureWidth + 1 texels (the
-  // last a copy of the first), textureHeight + 1 rows (the last a copy of the first).
+  // The texture, 0x00RRGGBB, row 0 at the top (v = 1), framed by a copy of its last column
+  // and row before the first and of its first after the last: (textureWidth + 2) x
+  // (textureHeight + 2) texels, texel (x, y) at (y + 1) (textureWidth + 2) + x + 1.
   const uint32_t* texels = nullptr;
   int textureWidth = 0, textureHeight = 0;
 };
@@ -64,26 +75,20 @@ void shadeSurfaceRunScalar(const SurfaceFrame& frame, const FaceSurface& face,
 // Eight samples at a time. Call only when cpuHasAvx2().
 void shadeSurfaceRunAvx2(const SurfaceFrame& frame, const FaceSurface& face, const SurfaceFan* fans,
                          int x, int y, int count, uint32_t* out);
-// Sixteen samples at a time. Call only when cpuHasAvx512().
-void shadeSurfaceRunAvx512(const SurfaceFrame& frame, const FaceSurface& face,
-                           const SurfaceFan* fans, int x, int y, int count, uint32_t* out);
 
 class SurfaceSetup;
 
-// Colors sample row y, keys[0, width), into out[0, width) (`out` has room for 16 more, which
-// the vector versions may overwrite): the background as `background`,
-// each run of a face's samples as the run functions above, with the faces' surfaces from
-// `setup` (set up on first sight). The AVX2 version keeps the runs' loops inline: a row holds
-// many short runs, and a call per run would cost more than its samples.
+// Colors sample row y, keys[0, width), into out[0, width) (`out` has room for 8 more, which
+// the vector version may overwrite): the background as `background`, each run of a face's
+// samples as the run functions above, with the faces' surfaces from `setup` (set up on first
+// sight).
 void shadeSurfaceRowScalar(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
                            uint32_t background, uint32_t* out);
 void shadeSurfaceRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
                          uint32_t background, uint32_t* out);
-void shadeSurfaceRowAvx512(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
-                           uint32_t background, uint32_t* out);
 
 using SurfaceRowFunction = void (*)(SurfaceSetup&, const DepthKey*, int, int, uint32_t, uint32_t*);
-// The widest version this CPU runs: AVX-512, AVX2, else the scalar one.
+// The AVX2 version where the CPU runs it, else the scalar one.
 SurfaceRowFunction surfaceRow();
 
 }  // namespace zrender
