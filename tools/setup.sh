@@ -8,7 +8,7 @@ cd "$root"
 
 packages=(g++ cmake ninja-build pkg-config
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-videoio-dev
-  libpng-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev)
+  libpng-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -33,8 +33,10 @@ struct BenchRow {
   double prepareMs = 0, transformMs = 0, visibilityMs = 0, shadeMs = 0, rasterMs = 0;
   double rasterMinMs = 0, frameMs = 0;
   double rasterSpeedup = 0, frameSpeedup = 0;
+  int threads = 1;
+  double oneThreadFrameMs = 0, threadSpeedup = 0;  // with more than one thread
   RenderStats stats;
-  bool identical = true;
+  bool identical = true;  // to the z-buffer's, and to its own with one thread
 };
 
 std::string machineName() {
@@ -66,21 +68,28 @@ std::string fixed(double v, int digits) {
   return buf;
 }
 
-std::string markdownTable(const std::vector<BenchRow>& rows, int repeat) {
+std::string markdownTable(const std::vector<BenchRow>& rows, int repeat, int threads) {
   std::ostringstream md;
-  md << "zrender bench: median of " << repeat << " frames, one thread, " << machineName() << ", "
-     << today() << "\n\n";
+  const bool perThread = threads > 1;
+  md << "zrender bench: median of " << repeat << " frames, "
+     << (perThread ? std::to_string(threads) + " threads" : std::string("one thread")) << ", "
+     << machineName() << ", " << today() << "\n\n";
   md << "| scene | size | algorithm | visibility ms | raster ms | frame ms | raster speed-up | "
-        "frame speed-up | prepare ms | triangles culled by HZB | octree nodes culled | "
-        "identical |\n";
-  md << "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+        "frame speed-up | "
+     << (perThread ? "one thread: frame ms | speed-up over one thread | " : "")
+     << "prepare ms | triangles culled by HZB | octree nodes culled | identical |\n";
+  md << "|---|---|---|---:|---:|---:|---:|---:|" << (perThread ? "---:|---:|" : "")
+     << "---:|---:|---:|---|\n";
   for (const BenchRow& r : rows) {
     md << "| " << r.scene << " | " << r.width << "x" << r.height << (r.msaa == 4 ? " MSAA4" : "")
        << " | " << r.algorithm << " | " << fixed(r.visibilityMs, 2) << " | " << fixed(r.rasterMs, 2)
        << " | " << fixed(r.frameMs, 2) << " | " << fixed(r.rasterSpeedup, 2) << "x | "
-       << fixed(r.frameSpeedup, 2) << "x | " << fixed(r.prepareMs, 1) << " | "
-       << r.stats.trianglesHzbCulled << " | " << r.stats.octreeNodesCulled << "/"
-       << r.stats.octreeNodesVisited << " | " << (r.identical ? "yes" : "**NO**") << " |\n";
+       << fixed(r.frameSpeedup, 2) << "x | ";
+    if (perThread)
+      md << fixed(r.oneThreadFrameMs, 2) << " | " << fixed(r.threadSpeedup, 2) << "x | ";
+    md << fixed(r.prepareMs, 1) << " | " << r.stats.trianglesHzbCulled << " | "
+       << r.stats.octreeNodesCulled << "/" << r.stats.octreeNodesVisited << " | "
+       << (r.identical ? "yes" : "**NO**") << " |\n";
   }
   return md.str();
 }
@@ -102,6 +111,11 @@ Json::Value rowToJson(const BenchRow& r) {
   j["frame_ms"] = r.frameMs;
   j["raster_speedup"] = r.rasterSpeedup;
   j["frame_speedup"] = r.frameSpeedup;
+  j["threads"] = r.threads;
+  if (r.threads > 1) {
+    j["one_thread_frame_ms"] = r.oneThreadFrameMs;
+    j["thread_speedup"] = r.threadSpeedup;
+  }
   j["identical"] = r.identical;
   j["stats"] = statsToJson(r.stats);
   return j;
@@ -171,12 +185,18 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     // Every algorithm is prepared first, then the frames go round the algorithms, so that a
     // burst of load on the machine falls on all of them alike rather than on one algorithm's
     // frames, and the ratios of one run stay comparable.
-    std::vector<std::unique_ptr<Renderer>> renderers;
+    // With more than one thread, each algorithm also renders on one, alternated the same way,
+    // for the speed-up and to check that its buffers do not depend on the threads.
+    const bool perThread = options.threads > 1;
+    std::vector<std::unique_ptr<Renderer>> renderers, oneThread;
     renderers.reserve(algorithms.size());
-    for (const std::string& algorithm : algorithms)
-      renderers.push_back(std::make_unique<Renderer>(scene, algorithm));
+    for (const std::string& algorithm : algorithms) {
+      renderers.push_back(std::make_unique<Renderer>(scene, algorithm, options.threads));
+      if (perThread) oneThread.push_back(std::make_unique<Renderer>(scene, algorithm, 1));
+    }
     const size_t n = algorithms.size();
     std::vector<std::vector<double>> transform(n), visibility(n), shade(n), raster(n), frame(n);
+    std::vector<std::vector<double>> oneThreadFrame(n);
     for (int i = 0; i < options.repeat; ++i) {
       if (tty)
         err << "\rbench: " << sceneName << " round " << (i + 1) << "/" << options.repeat << "   "
@@ -188,6 +208,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
         shade[k].push_back(t.shadeMs);
         raster[k].push_back(t.rasterMs());
         frame[k].push_back(t.frameMs());
+        if (perThread) oneThreadFrame[k].push_back(oneThread[k]->renderFrame(camera).frameMs());
       }
     }
     const Renderer& reference = *renderers[0];  // zbuffer
@@ -212,6 +233,14 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
       if (k > 0)
         row.identical = identicalFrames(renderer.buffer(), renderer.color(), reference.buffer(),
                                         reference.color());
+      row.threads = options.threads;
+      if (perThread) {
+        row.oneThreadFrameMs = median(oneThreadFrame[k]);
+        row.threadSpeedup = row.frameMs > 0 ? row.oneThreadFrameMs / row.frameMs : 0;
+        row.identical =
+            row.identical && identicalFrames(renderer.buffer(), renderer.color(),
+                                             oneThread[k]->buffer(), oneThread[k]->color());
+      }
       row.rasterSpeedup = row.rasterMs > 0 ? referenceRaster / row.rasterMs : 0;
       row.frameSpeedup = row.frameMs > 0 ? referenceFrame / row.frameMs : 0;
       disagreements += !row.identical;
@@ -220,7 +249,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   }
   if (tty) err << "\r" << std::string(60, ' ') << "\r";
 
-  const std::string table = markdownTable(rows, options.repeat);
+  const std::string table = markdownTable(rows, options.repeat, options.threads);
   out << table;
   if (options.markdown) writeTextAtomically(*options.markdown, table);
   if (options.json) {

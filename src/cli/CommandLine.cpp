@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/base/Threads.hpp"
 #include "zrender/cli/BenchCommand.hpp"
 #include "zrender/cli/RenderCommand.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
@@ -16,6 +17,9 @@ namespace zrender {
 namespace fs = std::filesystem;
 
 namespace {
+
+// More threads than any machine has: a typo rather than a request.
+constexpr int kMaxThreads = 4096;
 
 std::string oneLine(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
@@ -104,6 +108,9 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
     app.add_option("--markdown", options.markdown, "write the table as markdown");
     app.add_option("--json", options.json, "write the results as JSON");
     app.add_option("--chart", options.chart, "write a bar chart (PNG)");
+    app.add_option("--threads", options.threads,
+                   "threads per frame (default 1; more adds a speed-up column)")
+        ->check(CLI::Range(1, kMaxThreads));
     addSceneOptions(app, options.overrides, vectors, options.settings);
     if (!parseArguments(app, argc - 1, argv + 1, out)) return 0;
     finishVectors(vectors, options.overrides);
@@ -135,6 +142,9 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
   app.add_option("--turntable", options.turntable, "N frames turning the model once")
       ->check(CLI::Range(1, 100000));
   app.add_option("--contact-sheet", options.contactSheet, "tile turntable frames into one PNG");
+  options.threads = hardwareThreads();
+  app.add_option("--threads", options.threads, "threads per frame (default: the machine's)")
+      ->check(CLI::Range(1, kMaxThreads));
   addSceneOptions(app, options.overrides, vectors, options.settings);
   if (!parseArguments(app, argc, argv, out)) return 0;
   finishVectors(vectors, options.overrides);

@@ -135,7 +135,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   for (const auto& path : {options.depth, options.ids, options.contactSheet})
     if (path) checkWritable(*path);
 
-  Renderer renderer(scene, options.algorithm);
+  Renderer renderer(scene, options.algorithm, options.threads);
   const Camera baseCamera = makeCamera(scene);
   const bool tty = isatty(STDERR_FILENO);
 
@@ -197,6 +197,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
       Json::Value j(Json::objectValue);
       j["scene"] = settings.name;
       j["algorithm"] = renderer.algorithm().name();
+      j["threads"] = renderer.threads();
       if (turntable) j["frame"] = frame;
       j["width"] = settings.width;
       j["height"] = settings.height;

@@ -6,7 +6,7 @@ namespace zrender {
 
 void KeptTriangles::leaveOut(FrameGeometry& out, size_t first) {
   ScopedTimer timer(ownMs_);
-  std::vector<ScreenTriangle>& triangles = out.triangles;
+  GeometryVector<ScreenTriangle>& triangles = out.triangles;
   triangles.erase(std::remove_if(triangles.begin() + std::ptrdiff_t(first), triangles.end(),
                                  [this](const ScreenTriangle& t) { return !keep_(t); }),
                   triangles.end());

@@ -27,36 +27,57 @@ void sortByRow(const std::vector<T>& in, int rows, KeyOf keyOf, std::vector<T>& 
 
 }  // namespace
 
-void PolygonTables::build(const FrameGeometry& g, int width, int height) {
+bool faceRows(const FrameGeometry& g, uint32_t f, int height, int& first, int& last) {
+  const ScreenFace& face = g.faces[f];
+  const FixedPoint* v = g.vertices.data() + face.firstVertex;
+  int32_t minY = v[0].y, maxY = v[0].y;
+  for (uint32_t k = 1; k < face.vertexCount; ++k) {
+    minY = std::min(minY, v[k].y);
+    maxY = std::max(maxY, v[k].y);
+  }
+  first = std::max(firstSampleAtOrAfter(minY), 0);
+  last = std::min(lastSampleAtOrBefore(maxY), height - 1);
+  return first <= last;
+}
+
+void PolygonTables::build(const FrameGeometry& g, int width, int height, int bandBegin, int rowEnd,
+                          const uint32_t* faces, size_t count) {
   height = std::max(height, 0);
+  rowEnd = std::min(rowEnd, height);
+  rowBegin = bandBegin;
+  const int rows = std::max(rowEnd - rowBegin, 0);
   unsortedPolygons_.clear();
   unsortedEdges_.clear();
   triangleCount = 0;
-  polygonsEnding.assign(size_t(height), 0);
-  for (uint32_t f = 0; f < uint32_t(g.faces.size()) && width > 0 && height > 0; ++f) {
+  polygonsEnding.assign(size_t(rows), 0);
+  for (size_t i = 0; i < count && width > 0 && rows > 0; ++i) {
+    const uint32_t f = faces ? faces[i] : uint32_t(i);
     const ScreenFace& face = g.faces[f];
     const FixedPoint* v = g.vertices.data() + face.firstVertex;
     const uint32_t n = face.vertexCount;
     // Horizontal extent first: a sample is covered only if its centre lies in [minX, maxX).
     int32_t minX = v[0].x, maxX = v[0].x;
-    for (uint32_t i = 1; i < n; ++i) {
-      minX = std::min(minX, v[i].x);
-      maxX = std::max(maxX, v[i].x);
+    for (uint32_t k = 1; k < n; ++k) {
+      minX = std::min(minX, v[k].x);
+      maxX = std::max(maxX, v[k].x);
     }
     if (firstSampleAtOrAfter(minX) > width - 1 || lastSampleAtOrBefore(maxX) < 0) continue;
 
     const uint32_t polygon = uint32_t(unsortedPolygons_.size());
     const uint32_t edgeBegin = uint32_t(unsortedEdges_.size());
-    int32_t topRow = height, bottomRow = -1;
-    for (uint32_t i = 0; i < n; ++i) {
-      const FixedPoint& a = v[i];
-      const FixedPoint& b = v[i + 1 == n ? 0 : i + 1];
+    int32_t topRow = rowEnd, bottomRow = -1, imageTop = height;
+    for (uint32_t k = 0; k < n; ++k) {
+      const FixedPoint& a = v[k];
+      const FixedPoint& b = v[k + 1 == n ? 0 : k + 1];
       if (a.y == b.y) continue;  // horizontal edges are never active
       const FixedPoint& top = a.y < b.y ? a : b;
       const FixedPoint& bottom = a.y < b.y ? b : a;
       // Active rows: centre in [top.y, bottom.y), i.e. centre <= bottom.y - 1.
-      const int32_t first = std::max(firstSampleAtOrAfter(top.y), 0);
-      const int32_t last = std::min(lastSampleAtOrBefore(int64_t(bottom.y) - 1), height - 1);
+      const int32_t imageFirst = std::max(firstSampleAtOrAfter(top.y), 0);
+      const int32_t imageLast = std::min(lastSampleAtOrBefore(int64_t(bottom.y) - 1), height - 1);
+      if (imageFirst <= imageLast) imageTop = std::min(imageTop, imageFirst);
+      const int32_t first = std::max(imageFirst, rowBegin);
+      const int32_t last = std::min(imageLast, rowEnd - 1);
       if (first > last) continue;
       unsortedEdges_.push_back(ClassifiedEdge{top, bottom, first, last, polygon});
       topRow = std::min(topRow, first);
@@ -66,15 +87,15 @@ void PolygonTables::build(const FrameGeometry& g, int width, int height) {
     if (edgeCount == 0) continue;
     unsortedPolygons_.push_back(ClassifiedPolygon{g.triangles[face.firstTriangle].plane, face.id,
                                                   topRow, bottomRow, 0, edgeCount});
-    ++polygonsEnding[size_t(bottomRow)];
-    triangleCount += face.triangleCount;
+    ++polygonsEnding[size_t(bottomRow - rowBegin)];
+    if (imageTop >= rowBegin) triangleCount += face.triangleCount;
   }
 
   // CPT: polygons by top row; each gets its slots in the edge pool in that order.
   newIndex_.resize(unsortedPolygons_.size());
   sortByRow(
-      unsortedPolygons_, height, [](const ClassifiedPolygon& p) { return p.topRow; }, polygons,
-      polygonBucket, [this](size_t i, uint32_t j) { newIndex_[i] = j; });
+      unsortedPolygons_, rows, [&](const ClassifiedPolygon& p) { return p.topRow - rowBegin; },
+      polygons, polygonBucket, [this](size_t i, uint32_t j) { newIndex_[i] = j; });
   uint32_t slot = 0;
   for (ClassifiedPolygon& p : polygons) {
     p.edgeBegin = slot;
@@ -83,8 +104,8 @@ void PolygonTables::build(const FrameGeometry& g, int width, int height) {
   // CET: edges by first row, pointing at the sorted polygons.
   for (ClassifiedEdge& e : unsortedEdges_) e.polygon = newIndex_[e.polygon];
   sortByRow(
-      unsortedEdges_, height, [](const ClassifiedEdge& e) { return e.firstRow; }, edges, edgeBucket,
-      [](size_t, uint32_t) {});
+      unsortedEdges_, rows, [&](const ClassifiedEdge& e) { return e.firstRow - rowBegin; }, edges,
+      edgeBucket, [](size_t, uint32_t) {});
 }
 
 }  // namespace zrender

@@ -10,12 +10,13 @@ bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuf
   return cv::countNonZero(cv::Mat(colorA != colorB).reshape(1)) == 0;
 }
 
-Renderer::Renderer(const Scene& scene, const std::string& algorithm)
-    : Renderer(scene, makeAlgorithm(algorithm)) {}
+Renderer::Renderer(const Scene& scene, const std::string& algorithm, int threads)
+    : Renderer(scene, makeAlgorithm(algorithm), nullptr, threads) {}
 
 Renderer::Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm,
-                   const SourceWrapper& wrap)
+                   const SourceWrapper& wrap, int threads)
     : scene_(scene),
+      threads_(threads),
       algorithm_(std::move(algorithm)),
       shader_(scene, scene.settings.shading),
       sampleScale_(scene.settings.msaa == 4 ? 2 : 1) {
@@ -23,6 +24,8 @@ Renderer::Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algo
   const FaceBatches batches = algorithm_->prepare(scene);
   transformer_ =
       std::make_unique<FaceTransformer>(scene, sampleScale_, scene.settings.cull, batches);
+  transformer_->setThreads(&threads_);
+  bandShadeMs_.assign(size_t(threads_.count()), 0.0);
   source_ = transformer_.get();
   if (wrap) {
     wrapper_ = wrap(*transformer_, batches);
@@ -45,15 +48,26 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
       shader_.begin(buffer_, camera, sampleScale_, color_, &geometry_);
     }
     // Rows finished by the algorithm are shaded while their keys are still in cache; that time
-    // is shading time, not the algorithm's.
-    FrameInput input{scene_, camera, *source_, geometry_, [this, &shadeMs](int rows) {
-                       ScopedTimer shading(shadeMs);
-                       shader_.rowsFinal(rows);
-                     }};
+    // is shading time, not the algorithm's. With several threads, each thread's share of it
+    // counts (docs/design.md, Timings and JSON).
+    FrameInput input{scene_, camera, *source_, geometry_, nullptr, &threads_};
+    std::fill(bandShadeMs_.begin(), bandShadeMs_.end(), 0.0);
+    if (threads_.parallel()) {
+      input.onRowsReady = [this](int first, int end) {
+        ScopedTimer shading(bandShadeMs_[size_t(threads_.slot())]);
+        shader_.rowsReady(first, end, threads_);
+      };
+    } else {
+      input.onRowsFinal = [this, &shadeMs](int rows) {
+        ScopedTimer shading(shadeMs);
+        shader_.rowsFinal(rows);
+      };
+    }
     algorithm_->render(input, buffer_, stats_);
     ScopedTimer shading(shadeMs);
-    shader_.finish();
+    shader_.finish(threads_);
   }
+  for (double ms : bandShadeMs_) shadeMs += ms / threads_.count();
   FrameTimings timings;
   timings.transformMs = source_->transformMs();
   timings.shadeMs = shadeMs;

@@ -72,7 +72,7 @@ uint32_t FaceColors::uncachedColor(uint32_t faceId) const {
   return packRgb(g, g, g);
 }
 
-FaceColors::Lookup FaceColors::prepare(size_t samples) {
+FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
   // The common case (one color per face and pixel) is a table look-up per pixel, when there
   // are few faces for the pixels (the bunny: 31k front faces, 3.2M pixels): computing the
   // colors of the frame's faces in a row is cheaper than computing them on first sight, where
@@ -104,11 +104,20 @@ FaceColors::Lookup FaceColors::prepare(size_t samples) {
     }
   }
   if (lookup_ != Lookup::ById || !geometry_) return lookup_;
+  const GeometryVector<ScreenFace>& faces = geometry_->faces;
+  if (threads && threads->parallel()) {
+    // Each face once: the threads write distinct entries.
+    threads->forRanges(faces.size() - tableFaces_, 4096, [&](size_t begin, size_t end) {
+      for (size_t i = tableFaces_ + begin; i < tableFaces_ + end; ++i)
+        table_[size_t(faces[i].id) + 1] = uncachedColor(faces[i].id);
+    });
+    tableFaces_ = faces.size();
+    return lookup_;
+  }
   // Each face of the frame comes once: no per-face cache to ask. The octree's faces come in
   // its leaf order, unrelated to their ids, so the normals and table entries they need are
   // fetched a few faces ahead (32 ahead measured a little better than 8 and 16).
   constexpr size_t kAhead = 32;
-  const std::vector<ScreenFace>& faces = geometry_->faces;
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   for (; tableFaces_ < faces.size(); ++tableFaces_) {
     if (tableFaces_ + kAhead < faces.size()) {

@@ -93,6 +93,9 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   if (faceColors_) faceColors_->begin(modelView_, background_, geometry);
   if (surface_) surface_->begin(modelView_, camera, fb.width(), fb.height());
   perFace_ = scale == 1 && faceColors_;
+  prepared_ = std::make_unique<tbb::collaborative_once_flag>();
+  earlyShading_ = false;
+  rowDone_.assign(size_t(color.rows), 0);
 }
 
 void Shader::rowsFinal(int sampleRows) {
@@ -101,19 +104,72 @@ void Shader::rowsFinal(int sampleRows) {
   shadePixelRows(std::min(sampleRows / scale_, color_->rows));
 }
 
+void Shader::findDepthRange(size_t begin, size_t end, float& lo, float& hi) const {
+  lo = 1.0f;
+  hi = 0.0f;
+  for (size_t i = begin; i < end; ++i) {
+    if (keyFaceId(fb_->data()[i]) == kBackgroundId) continue;
+    const float d = keyDepth(fb_->data()[i]);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+}
+
 void Shader::finish() {
   if (mode_ == ShadingMode::Depth) {
-    depthLo_ = 1.0f;
     float depthHi = 0.0f;
-    for (size_t i = 0; i < fb_->size(); ++i) {
-      if (keyFaceId(fb_->data()[i]) == kBackgroundId) continue;
-      const float d = keyDepth(fb_->data()[i]);
-      depthLo_ = std::min(depthLo_, d);
-      depthHi = std::max(depthHi, d);
-    }
+    findDepthRange(0, fb_->size(), depthLo_, depthHi);
     depthRange_ = depthHi > depthLo_ ? double(depthHi) - depthLo_ : 1.0;
   }
   shadePixelRows(color_->rows);
+}
+
+bool Shader::prepareFaces(const Threads& threads, bool bufferFinal) {
+  if (mode_ == ShadingMode::Depth) return bufferFinal;  // the range of the whole frame
+  if (faceColors_) lookup_ = faceColors_->prepare(fb_->size(), &threads);
+  if (surface_) {
+    if (geometry_ && surface_->setUpFaces(*geometry_, fb_->size())) return true;
+    if (!bufferFinal) return false;
+    surface_->setUpVisible(*fb_, geometry_, threads);
+  }
+  return true;
+}
+
+void Shader::rowsReady(int first, int end, const Threads& threads) {
+  tbb::collaborative_call_once(*prepared_, [&] { earlyShading_ = prepareFaces(threads, false); });
+  if (!earlyShading_) return;
+  const int firstRow = (first + scale_ - 1) / scale_, endRow = std::min(end / scale_, color_->rows);
+  if (firstRow >= endRow) return;
+  std::vector<uint32_t> rowColors;
+  paintRows(firstRow, endRow, rowColors, true);
+  std::fill(rowDone_.begin() + firstRow, rowDone_.begin() + endRow, uint8_t(1));
+}
+
+void Shader::finish(const Threads& threads) {
+  if (!threads.parallel()) {
+    finish();
+    return;
+  }
+  if (mode_ == ShadingMode::Depth) {
+    // The range of each row of samples, then of them all: the same whatever the threads.
+    const size_t width = size_t(fb_->width()), rows = size_t(fb_->height());
+    std::vector<float> lo(rows), hi(rows);
+    threads.forRanges(rows, 16, [&](size_t b, size_t e) {
+      for (size_t y = b; y < e; ++y) findDepthRange(y * width, (y + 1) * width, lo[y], hi[y]);
+    });
+    depthLo_ = *std::min_element(lo.begin(), lo.end());
+    const float depthHi = *std::max_element(hi.begin(), hi.end());
+    depthRange_ = depthHi > depthLo_ ? double(depthHi) - depthLo_ : 1.0;
+  }
+  // Every face that can be in the buffer is set up before the rows are shared out, so that
+  // coloring them writes nothing but the image.
+  prepareFaces(threads, true);
+  threads.forRanges(rowDone_.size(), 8, [&](size_t b, size_t e) {
+    std::vector<uint32_t> rowColors;
+    for (size_t y = b; y < e; ++y)
+      if (!rowDone_[y]) paintRows(int(y), int(y) + 1, rowColors, true);
+  });
+  shadedRows_ = color_->rows;
 }
 
 void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
@@ -121,7 +177,7 @@ void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   finish();
 }
 
-uint32_t Shader::sampleColor(DepthKey key) {
+uint32_t Shader::sampleColor(DepthKey key, bool shared) {
   const uint32_t id = keyFaceId(key);
   if (id == kBackgroundId) return background_;
   if (mode_ == ShadingMode::Depth) {
@@ -129,14 +185,26 @@ uint32_t Shader::sampleColor(DepthKey key) {
     const double g = 1.0 - (double(keyDepth(key)) - depthLo_) / depthRange_;
     return packRgb(g, g, g);
   }
-  return faceColors_->color(id);
+  return shared ? sharedFaceColor(id) : faceColors_->color(id);
 }
 
-void Shader::colorSampleRow(int y, uint32_t* out) {
+uint32_t Shader::sharedFaceColor(uint32_t id) const {
+  const uint32_t* table = faceColors_->table();
+  switch (lookup_) {
+    case FaceColors::Lookup::ById:
+      return table[size_t(id) + 1];
+    case FaceColors::Lookup::ByMeshFace:
+      return table[id % uint32_t(scene_.mesh->faceCount())];
+    default:
+      return faceColors_->uncachedColor(id);
+  }
+}
+
+void Shader::colorSampleRow(int y, uint32_t* out, bool shared) {
   const DepthKey* row = fb_->row(y);
   const int width = fb_->width();
   if (!surface_) {
-    for (int x = 0; x < width; ++x) out[x] = sampleColor(row[x]);
+    for (int x = 0; x < width; ++x) out[x] = sampleColor(row[x], shared);
     return;
   }
   surfaceRow_(*surface_, row, width, y, background_, out);
@@ -146,18 +214,26 @@ void Shader::shadePixelRows(int endRow) {
   const int firstRow = shadedRows_;
   if (endRow <= firstRow) return;
   shadedRows_ = endRow;
+  if (perFace_) lookup_ = faceColors_->prepare(fb_->size());
+  if (surface_ && geometry_) surface_->setUpFaces(*geometry_, fb_->size());
+  paintRows(firstRow, endRow, rowColors_, false);
+}
+
+void Shader::paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColors, bool shared) {
   const FrameBuffer& fb = *fb_;
   cv::Mat& color = *color_;
   if (perFace_) {
-    const FaceColors::Lookup lookup = faceColors_->prepare(fb.size());
     const uint32_t* table = faceColors_->table();
-    if (lookup == FaceColors::Lookup::ById) {
+    if (lookup_ == FaceColors::Lookup::ById) {
       shadeRows(fb, firstRow, endRow, background_, color,
                 [table](DepthKey key) { return table[uint32_t(keyFaceId(key) + 1u)]; });
-    } else if (lookup == FaceColors::Lookup::ByMeshFace) {
+    } else if (lookup_ == FaceColors::Lookup::ByMeshFace) {
       const uint32_t meshFaces = uint32_t(scene_.mesh->faceCount());
       shadeFaceRuns(fb, firstRow, endRow, background_, color,
                     [&](uint32_t id) { return table[id % meshFaces]; });
+    } else if (shared) {
+      shadeFaceRuns(fb, firstRow, endRow, background_, color,
+                    [&](uint32_t id) { return faceColors_->uncachedColor(id); });
     } else {
       shadeFaceRuns(fb, firstRow, endRow, background_, color,
                     [&](uint32_t id) { return faceColors_->color(id); });
@@ -165,15 +241,14 @@ void Shader::shadePixelRows(int endRow) {
     return;
   }
 
-  if (surface_ && geometry_) surface_->setUpFaces(*geometry_, fb.size());
   const int width = color.cols;
-  rowColors_.resize(2 * (size_t(fb.width()) + 16));  // 16: room for a last block past a row
-  uint32_t* colors0 = rowColors_.data();
+  rowColors.resize(2 * (size_t(fb.width()) + 16));  // 16: room for a last block past a row
+  uint32_t* colors0 = rowColors.data();
   uint32_t* colors1 = colors0 + fb.width() + 16;
   for (int y = firstRow; y < endRow; ++y) {
     uchar* out = color.ptr<uchar>(y);
     if (scale_ == 1) {
-      colorSampleRow(y, colors0);
+      colorSampleRow(y, colors0, shared);
       packBgr_(colors0, width, out);
     } else if (mode_ == ShadingMode::Id) {
       // A mean of ids is no face's id: an id image holds each pixel's nearest sample, as
@@ -183,14 +258,14 @@ void Shader::shadePixelRows(int endRow) {
       const DepthKey* r1 = fb.row(2 * y + 1);
       for (int x = 0; x < width; ++x) {
         const uint32_t c =
-            sampleColor(std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}));
+            sampleColor(std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}), shared);
         out[3 * x + 0] = uchar(c);
         out[3 * x + 1] = uchar(c >> 8);
         out[3 * x + 2] = uchar(c >> 16);
       }
     } else {
-      colorSampleRow(2 * y, colors0);
-      colorSampleRow(2 * y + 1, colors1);
+      colorSampleRow(2 * y, colors0, shared);
+      colorSampleRow(2 * y + 1, colors1, shared);
       for (int x = 0; x < width; ++x) {
         const uint32_t cs[4] = {colors0[2 * x], colors0[2 * x + 1], colors1[2 * x],
                                 colors1[2 * x + 1]};

@@ -1,7 +1,9 @@
 #include "zrender/shading/SurfaceSetup.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 #include "zrender/shading/ShadingModel.hpp"
 
@@ -81,6 +83,7 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   }
   ++stamp_;
   batchDone_ = false;
+  batched_ = false;
   surfaces_.clear();
   fans_.clear();
   // The view-space ray through a sample centre: x_view / -z_view = x_ndc / P00.
@@ -95,11 +98,12 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   frame_.rayScaleY = float(rayScaleY_);
 }
 
-void SurfaceSetup::setUpFaces(const FrameGeometry& geometry, size_t samples) {
-  if (batchDone_) return;
+bool SurfaceSetup::setUpFaces(const FrameGeometry& geometry, size_t samples) {
+  if (batchDone_) return batched_;
   batchDone_ = true;
-  const std::vector<ScreenFace>& faces = geometry.faces;
-  if (faces.size() * 16 > samples) return;
+  const GeometryVector<ScreenFace>& faces = geometry.faces;
+  if (faces.size() * 16 > samples) return false;
+  batched_ = true;
   const Mesh& mesh = *scene_.mesh;
   const uint32_t nf = uint32_t(mesh.faceCount());
   constexpr size_t kAhead = 8;
@@ -116,6 +120,34 @@ void SurfaceSetup::setUpFaces(const FrameGeometry& geometry, size_t samples) {
     if (i + kAhead < faces.size()) prefetch(faces[i + kAhead].id);
     surface(faces[i].id);
   }
+  return true;
+}
+
+void SurfaceSetup::setUpVisible(const FrameBuffer& fb, const FrameGeometry* geometry,
+                                const Threads& threads) {
+  if (geometry && setUpFaces(*geometry, fb.size())) return;
+  // The faces in the buffer, each listed once by the thread that marks it first (in no fixed
+  // order: set-up order changes no color), then set up one after the other.
+  std::vector<std::atomic<uint64_t>> seen((size_t(scene_.faceCount()) + 63) / 64);
+  std::vector<uint32_t> visible;
+  std::mutex visibleMutex;
+  const size_t width = size_t(fb.width());
+  threads.forRanges(size_t(fb.height()), 16, [&](size_t begin, size_t end) {
+    std::vector<uint32_t> found;
+    for (const DepthKey* key = fb.row(int(begin));
+         key != fb.row(int(begin)) + (end - begin) * width; ++key) {
+      const uint32_t id = keyFaceId(*key);
+      if (id == kBackgroundId) continue;
+      const uint64_t bit = uint64_t(1) << (id & 63);
+      std::atomic<uint64_t>& word = seen[id >> 6];
+      if (!(word.load(std::memory_order_relaxed) & bit) &&
+          !(word.fetch_or(bit, std::memory_order_relaxed) & bit))
+        found.push_back(id);
+    }
+    const std::lock_guard<std::mutex> lock(visibleMutex);
+    visible.insert(visible.end(), found.begin(), found.end());
+  });
+  for (uint32_t id : visible) surface(id);
 }
 
 uint32_t SurfaceSetup::setUp(uint32_t faceId) {

@@ -1,5 +1,8 @@
 #include "zrender/transform/FaceTransformer.hpp"
 
+#include <algorithm>
+#include <array>
+
 #include "zrender/base/Clock.hpp"
 #include "zrender/base/CpuFeatures.hpp"
 
@@ -39,25 +42,147 @@ InstanceView FaceTransformer::viewOfInstance(uint32_t instance) const {
 }
 
 void FaceTransformer::pullAll(FrameGeometry& out) {
+  if (threads_ && threads_->parallel()) {
+    pullAllParallel(out);
+    return;
+  }
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) pullInstance(k, out);
 }
 
-void FaceTransformer::projectInstance(uint32_t instance) {
+void FaceTransformer::projectSlots(uint32_t instance, size_t begin, size_t end, VertexState* state,
+                                   Vec3* window) const {
   const std::vector<Vec3>& positions = layout_.slotPositions();
-  const size_t slots = positions.size();
-  instanceState_.resize(slots);
-  instanceWindow_.resize(slots);
   const Mat4& mvp = mvp_[instance];
-  size_t v = 0;
+  size_t v = begin;
   if (avx2_) {
-    for (; v + 4 <= slots; v += 4) {
+    for (; v + 4 <= end; v += 4) {
       const Vec3* p = positions.data() + v;
       const Vec3* const four[4] = {p, p + 1, p + 2, p + 3};
-      projectVertices4Avx2(mvp, four, viewport_, frame_, &instanceState_[v], &instanceWindow_[v]);
+      projectVertices4Avx2(mvp, four, viewport_, frame_, state + v, window + v);
     }
   }
-  for (; v < slots; ++v)
-    projectVertex(mvp, positions[v], viewport_, frame_, instanceState_[v], instanceWindow_[v]);
+  for (; v < end; ++v) projectVertex(mvp, positions[v], viewport_, frame_, state[v], window[v]);
+}
+
+void FaceTransformer::projectInstance(uint32_t instance) {
+  const size_t slots = layout_.slotPositions().size();
+  instanceState_.resize(slots);
+  instanceWindow_.resize(slots);
+  projectSlots(instance, 0, slots, instanceState_.data(), instanceWindow_.data());
+}
+
+void FaceTransformer::assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,
+                                    const VertexView& vertices, FaceAssembler& assembler,
+                                    FrameGeometry& out) const {
+  out.width = viewport_.width * viewport_.scale;
+  out.height = viewport_.height * viewport_.scale;
+  assembler.setVertices(vertices);
+  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
+  const uint32_t* faceStart = scene_.mesh->faceStart.data();
+  const uint32_t* cornerSlots = layout_.cornerSlots().data();
+  for (uint32_t f = faceBegin; f < faceEnd; ++f) {
+    const uint32_t first = faceStart[f];
+    assembler.append(instance * nf + f, FaceCorners{cornerSlots + first, 0},
+                     faceStart[f + 1] - first, out);
+  }
+}
+
+namespace {
+
+// Faces per chunk of pullAllParallel when one instance is cut into chunks: enough for a
+// chunk's work to dwarf a task's cost, few enough for the chunks to balance.
+constexpr uint32_t kChunkFaces = 4096;
+
+// Appends `chunk` to `out`, its indices moved by what `out` held before (`base`: its vertex,
+// face and triangle counts then).
+void appendChunk(const FrameGeometry& chunk, const size_t base[3], FrameGeometry& out) {
+  std::copy(chunk.vertices.begin(), chunk.vertices.end(), out.vertices.begin() + base[0]);
+  ScreenFace* faces = out.faces.data() + base[1];
+  for (size_t i = 0; i < chunk.faces.size(); ++i) {
+    faces[i] = chunk.faces[i];
+    faces[i].firstVertex += uint32_t(base[0]);
+    faces[i].firstTriangle += uint32_t(base[2]);
+  }
+  ScreenTriangle* triangles = out.triangles.data() + base[2];
+  for (size_t i = 0; i < chunk.triangles.size(); ++i) {
+    triangles[i] = chunk.triangles[i];
+    triangles[i].face += uint32_t(base[1]);
+  }
+}
+
+}  // namespace
+
+void FaceTransformer::pullAllParallel(FrameGeometry& out) {
+  ScopedTimer timer(transformMs_);
+  const Threads& threads = *threads_;
+  const uint32_t instances = scene_.instanceCount();
+  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
+  if (workers_.size() != size_t(threads.count()))
+    workers_.assign(size_t(threads.count()), Worker{assembler_, {}, {}});
+  for (Worker& w : workers_)
+    w.assembler.beginFrame(viewport_.width, viewport_.height, layout_.slotPositions(), mvp_);
+  // A grid: one chunk per instance, each projecting its own vertices. One instance: its
+  // vertices projected by all threads, then its faces in chunks.
+  const bool single = instances == 1;
+  const uint32_t chunks = single ? (nf + kChunkFaces - 1) / kChunkFaces : instances;
+  if (chunks_.size() < chunks) chunks_.resize(chunks);
+  const InstanceView firstView = viewOfInstance(0);
+  if (single && !firstView.outside) {
+    const size_t slots = layout_.slotPositions().size();
+    instanceState_.resize(slots);
+    instanceWindow_.resize(slots);
+    threads.forRanges(slots, 4096, [&](size_t begin, size_t end) {
+      projectSlots(0, begin, end, instanceState_.data(), instanceWindow_.data());
+    });
+  }
+  threads.forEach(chunks, [&](size_t c) {
+    FrameGeometry& chunk = chunks_[c];
+    chunk.clear();
+    Worker& w = workers_[size_t(threads.slot())];
+    const uint32_t instance = single ? 0 : uint32_t(c);
+    const InstanceView view = single ? firstView : viewOfInstance(instance);
+    if (view.outside) {
+      // Every face would be clipped away (those of fewer than 3 corners: degenerate).
+      if (single && c > 0) return;
+      chunk.counters.clippedAway += layout_.instanceTriangles();
+      chunk.counters.degenerate += layout_.instanceDegenerate();
+      return;
+    }
+    if (single) {
+      const uint32_t begin = uint32_t(c) * kChunkFaces;
+      assembleFaces(0, begin, std::min(nf, begin + kChunkFaces),
+                    VertexView{instanceState_.data(), instanceWindow_.data(), nullptr, nullptr, 0},
+                    w.assembler, chunk);
+      return;
+    }
+    const size_t slots = layout_.slotPositions().size();
+    w.state.resize(slots);
+    w.window.resize(slots);
+    projectSlots(instance, 0, slots, w.state.data(), w.window.data());
+    assembleFaces(instance, 0, nf,
+                  VertexView{w.state.data(), w.window.data(), nullptr, nullptr, instance},
+                  w.assembler, chunk);
+  });
+  // Joined in chunk order, which is face id order: the geometry of one thread exactly.
+  std::vector<std::array<size_t, 3>> base(chunks);
+  size_t sizes[3] = {out.vertices.size(), out.faces.size(), out.triangles.size()};
+  for (uint32_t c = 0; c < chunks; ++c) {
+    base[c] = {sizes[0], sizes[1], sizes[2]};
+    sizes[0] += chunks_[c].vertices.size();
+    sizes[1] += chunks_[c].faces.size();
+    sizes[2] += chunks_[c].triangles.size();
+    const TransformCounters& k = chunks_[c].counters;
+    out.counters.backfaceCulled += k.backfaceCulled;
+    out.counters.clippedAway += k.clippedAway;
+    out.counters.degenerate += k.degenerate;
+    out.counters.filtered += k.filtered;
+  }
+  out.width = viewport_.width * viewport_.scale;
+  out.height = viewport_.height * viewport_.scale;
+  out.vertices.resize(sizes[0]);
+  out.faces.resize(sizes[1]);
+  out.triangles.resize(sizes[2]);
+  threads.forEach(chunks, [&](size_t c) { appendChunk(chunks_[c], base[c].data(), out); });
 }
 
 void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter) {

@@ -76,7 +76,7 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
     // Band order keeps the z-buffer's cache locality; in the last instance, the rows above a
     // band are final once it starts (no later triangle starts above it).
     const bool last = i + 1 == instances_.size();
-    const std::vector<ScreenTriangle>& triangles =
+    const GeometryVector<ScreenTriangle>& triangles =
         bands_.sort(g, firstTriangle, fb.width(), fb.height());
     for (int band = 0; band < bands_.bandCount(); ++band) {
       const int bandTop = band << TriangleBands::kBandShift;

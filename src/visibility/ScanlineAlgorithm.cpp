@@ -8,40 +8,69 @@ namespace zrender {
 
 void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   input.source.pullAll(input.geometry);
+  const FrameGeometry& g = input.geometry;
   const int width = fb.width(), height = fb.height();
-  tables_.build(input.geometry, width, height);
-  stats.trianglesRasterized += tables_.triangleCount;
-  activeEdges_.resize(tables_.edges.size());
-  activeCount_.assign(tables_.polygons.size(), 0);
-  activePolygons_.clear();
+  if (!input.parallel()) {
+    whole_.tables.build(g, width, height);
+    stats.trianglesRasterized += whole_.tables.triangleCount;
+    drawRows(whole_, height, input, fb, stats);
+    return;
+  }
+  const Threads& threads = *input.threads;
+  const RowBands bands(height, threads.count() * kBandsPerThread);
+  faceLists_.build(g.faces.size(), bands, threads, [&](size_t f, int& first, int& last) {
+    return faceRows(g, uint32_t(f), height, first, last);
+  });
+  perThread_.resize(size_t(threads.count()));
+  bandStats_.assign(size_t(bands.count()), RenderStats());
+  threads.forEach(size_t(bands.count()), [&](size_t b) {
+    Band& band = perThread_[size_t(threads.slot())];
+    band.tables.build(g, width, height, bands.rowBegin(int(b)), bands.rowEnd(int(b)),
+                      faceLists_.items(int(b)), faceLists_.size(int(b)));
+    bandStats_[b].trianglesRasterized += band.tables.triangleCount;
+    drawRows(band, bands.rowEnd(int(b)), input, fb, bandStats_[b]);
+  });
+  for (const RenderStats& s : bandStats_) stats += s;
+}
 
+void ScanlineAlgorithm::drawRows(Band& band, int rowEnd, const FrameInput& input, FrameBuffer& fb,
+                                 RenderStats& stats) const {
+  const PolygonTables& tables = band.tables;
+  std::vector<ActiveEdge>& activeEdges = band.activeEdges;
+  std::vector<uint32_t>& activeCount = band.activeCount;
+  std::vector<uint32_t>& activePolygons = band.activePolygons;
+  activeEdges.resize(tables.edges.size());
+  activeCount.assign(tables.polygons.size(), 0);
+  activePolygons.clear();
+
+  const int width = fb.width();
   const SpanFillFunction fill = spanFill();
   uint64_t tested = 0, written = 0, spans = 0;
   size_t activeEdgeTotal = 0, maxActiveEdges = 0, maxActivePolygons = 0;
-  for (int y = 0; y < height; ++y) {
+  for (int y = tables.rowBegin; y < rowEnd; ++y) {
     // Polygons and edges whose top row is y join the active tables.
-    for (uint32_t k = tables_.polygonBucket[y]; k < tables_.polygonBucket[y + 1]; ++k)
-      activePolygons_.push_back(k);
-    for (uint32_t k = tables_.edgeBucket[y]; k < tables_.edgeBucket[y + 1]; ++k) {
-      const ClassifiedEdge& e = tables_.edges[k];
-      ActiveEdge& a =
-          activeEdges_[tables_.polygons[e.polygon].edgeBegin + activeCount_[e.polygon]++];
+    const int r = y - tables.rowBegin;
+    for (uint32_t k = tables.polygonBucket[r]; k < tables.polygonBucket[r + 1]; ++k)
+      activePolygons.push_back(k);
+    for (uint32_t k = tables.edgeBucket[r]; k < tables.edgeBucket[r + 1]; ++k) {
+      const ClassifiedEdge& e = tables.edges[k];
+      ActiveEdge& a = activeEdges[tables.polygons[e.polygon].edgeBegin + activeCount[e.polygon]++];
       a.step.start(e.top, e.bottom, y);
       a.lastRow = e.lastRow;
       ++activeEdgeTotal;
     }
     maxActiveEdges = std::max(maxActiveEdges, activeEdgeTotal);
-    maxActivePolygons = std::max(maxActivePolygons, activePolygons_.size());
+    maxActivePolygons = std::max(maxActivePolygons, activePolygons.size());
 
     // The one-row depth buffer is the frame buffer's row itself: cleared, then filled.
     DepthKey* row = fb.row(y);
     std::fill(row, row + width, kClearKey);
     size_t keep = 0;
-    for (size_t i = 0; i < activePolygons_.size(); ++i) {
-      const uint32_t pi = activePolygons_[i];
-      const ClassifiedPolygon& p = tables_.polygons[pi];
-      ActiveEdge* list = activeEdges_.data() + p.edgeBegin;
-      const uint32_t n = activeCount_[pi];
+    for (size_t i = 0; i < activePolygons.size(); ++i) {
+      const uint32_t pi = activePolygons[i];
+      const ClassifiedPolygon& p = tables.polygons[pi];
+      ActiveEdge* list = activeEdges.data() + p.edgeBegin;
+      const uint32_t n = activeCount[pi];
       const double rowBase = p.plane.rowBase(y);
       // The span [left, right) of the row, already clipped to the image; nothing when empty.
       auto fillSpan = [&](int left, int right) {
@@ -77,10 +106,10 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
         ++m;
       }
       activeEdgeTotal -= n - m;
-      activeCount_[pi] = m;
-      if (p.bottomRow != y) activePolygons_[keep++] = pi;
+      activeCount[pi] = m;
+      if (p.bottomRow != y) activePolygons[keep++] = pi;
     }
-    activePolygons_.resize(keep);
+    activePolygons.resize(keep);
     input.rowFinished(y);
   }
 

@@ -8,8 +8,12 @@ namespace zrender {
 
 void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   input.source.pullAll(input.geometry);
+  if (input.parallel()) {
+    renderBands(input, fb, stats);
+    return;
+  }
   const int width = fb.width(), height = fb.height();
-  const std::vector<ScreenTriangle>& triangles = bands_.sort(input.geometry, width, height);
+  const GeometryVector<ScreenTriangle>& triangles = bands_.sort(input.geometry, width, height);
 
   // Rows are cleared just before the first triangle that reaches them, while they are about
   // to be used, instead of in a separate pass over the whole buffer.
@@ -37,6 +41,33 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     }
   }
   clearRowsUpTo(height - 1);
+}
+
+void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+  const Threads& threads = *input.threads;
+  const int width = fb.width(), height = fb.height();
+  const GeometryVector<ScreenTriangle>& triangles = bands_.bin(input.geometry, width, height, threads);
+  // Each band is cleared and drawn by one thread, its triangles clipped to its rows; a
+  // triangle is counted by the first band it reaches, as one thread counts it once.
+  bandStats_.assign(size_t(bands_.bandCount()), RenderStats());
+  const TriangleFillFunction fill = triangleFill();
+  threads.forEach(size_t(bands_.bandCount()), [&](size_t b) {
+    const int band = int(b);
+    const int top = band << TriangleBands::kBandShift;
+    const int bottom = std::min(height, top + (1 << TriangleBands::kBandShift));
+    std::fill(fb.row(top), fb.row(bottom - 1) + width, kClearKey);
+    RenderStats& s = bandStats_[b];
+    TriangleSetup setup;
+    for (uint32_t i = bands_.bandStart(band); i < bands_.bandStart(band + 1); ++i) {
+      const ScreenTriangle& t = triangles[i];
+      if (!setup.bounds(t.v, width, top, bottom)) continue;
+      setup.edges(t.v);
+      s.trianglesRasterized += TriangleBands::firstBandOf(t, band);
+      fill(setup, t.plane, t.id, fb, s);
+    }
+    input.rowsReady(top, bottom);
+  });
+  for (const RenderStats& s : bandStats_) stats += s;
 }
 
 }  // namespace zrender

@@ -54,7 +54,7 @@ FrameGeometry sixteenTriangles() {
   return g;
 }
 
-std::vector<uint32_t> idsOf(const std::vector<ScreenTriangle>& triangles) {
+std::vector<uint32_t> idsOf(const GeometryVector<ScreenTriangle>& triangles) {
   std::vector<uint32_t> ids;
   for (const ScreenTriangle& t : triangles) ids.push_back(t.id);
   return ids;
@@ -70,7 +70,7 @@ TEST(TriangleBands, SortedByTheBandOfTheirFirstSampleRowInSubmissionOrder) {
   EXPECT_EQ(TriangleBands::kBandShift, 5);  // bands of 32 rows
   const FrameGeometry g = sixteenTriangles();
   TriangleBands bands;
-  const std::vector<ScreenTriangle>& sorted = bands.sort(g, g.width, g.height);
+  const GeometryVector<ScreenTriangle>& sorted = bands.sort(g, g.width, g.height);
   EXPECT_EQ(idsOf(sorted), (std::vector<uint32_t>{1, 3, 5, 12, 0, 4, 13, 15, 2, 14}));
   ASSERT_EQ(bands.bandCount(), 4);
   EXPECT_EQ(bandStarts(bands), (std::vector<uint32_t>{0, 4, 6, 8, 10}));
@@ -88,7 +88,7 @@ TEST(TriangleBands, TrianglesFromAnIndexOnAreSortedAlone) {
   // Triangles 6 to 15: of those, 12 (band 0), 13 and 15 (band 2) and 14 (band 3) reach the image.
   const FrameGeometry g = sixteenTriangles();
   TriangleBands bands;
-  const std::vector<ScreenTriangle>& sorted = bands.sort(g, 6, g.width, g.height);
+  const GeometryVector<ScreenTriangle>& sorted = bands.sort(g, 6, g.width, g.height);
   EXPECT_EQ(idsOf(sorted), (std::vector<uint32_t>{12, 13, 15, 14}));
   ASSERT_EQ(bands.bandCount(), 4);
   EXPECT_EQ(bandStarts(bands), (std::vector<uint32_t>{0, 1, 1, 3, 4}));
@@ -103,7 +103,7 @@ TEST(TriangleBands, BandsFollowTheImageHeightFromOneSortToTheNext) {
   small.width = 40;
   small.height = 32;  // one band
   small.triangles = {rows(10, 20, 5), rows(0, 5, 2), rows(31.6, 40, 9), rows(31.4, 40, 7)};
-  const std::vector<ScreenTriangle>& sorted = bands.sort(small, small.width, small.height);
+  const GeometryVector<ScreenTriangle>& sorted = bands.sort(small, small.width, small.height);
   EXPECT_EQ(idsOf(sorted), (std::vector<uint32_t>{5, 2, 7}));  // 9 starts below the image
   ASSERT_EQ(bands.bandCount(), 1);
   EXPECT_EQ(bandStarts(bands), (std::vector<uint32_t>{0, 3}));

@@ -63,7 +63,7 @@ FrameBuffer renderHandMadeFace(const std::vector<FixedPoint>& corners,
   test::GivenGeometry given;
   FrameGeometry geometry;
   geometry.width = geometry.height = 8;
-  geometry.vertices = corners;
+  geometry.vertices.assign(corners.begin(), corners.end());
   std::vector<std::array<uint32_t, 3>> pieces;
   std::vector<uint32_t> scratch;
   EXPECT_TRUE(triangulatePolygon(corners.data(), uint32_t(corners.size()), pieces, scratch));

@@ -15,6 +15,7 @@ struct BenchOptions {
   std::vector<std::string> scenes;      // empty: every scene with "bench": true
   std::vector<std::string> algorithms;  // empty: all
   int repeat = 5;
+  int threads = 1;  // per frame; more than 1 also times one thread, for the speed-up
   std::optional<std::filesystem::path> settings, markdown, json, chart;
   SceneOverrides overrides;
 };

@@ -19,6 +19,7 @@ struct RenderOptions {
   bool json = false;
   bool stats = false;
   int turntable = 0;  // frames; 0 = a single image
+  int threads = 1;    // per frame
   std::optional<std::filesystem::path> contactSheet;
   SceneOverrides overrides;
 };

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "zrender/base/UninitializedAllocator.hpp"
 #include "zrender/raster/RasterRules.hpp"
 
 namespace zrender {
@@ -37,11 +38,15 @@ struct TransformCounters {
   uint64_t filtered = 0;        // dropped by a TriangleFilter's hidden tiles (HiddenTiles)
 };
 
+// The arrays of a frame's geometry: written in full after they grow (UninitializedAllocator).
+template <class T>
+using GeometryVector = std::vector<T, UninitializedAllocator<T>>;
+
 struct FrameGeometry {
   int width = 0, height = 0;  // in samples (pixels times 2 with MSAA 4)
-  std::vector<FixedPoint> vertices;
-  std::vector<ScreenFace> faces;
-  std::vector<ScreenTriangle> triangles;
+  GeometryVector<FixedPoint> vertices;
+  GeometryVector<ScreenFace> faces;
+  GeometryVector<ScreenTriangle> triangles;
   TransformCounters counters;
 
   void clear() {

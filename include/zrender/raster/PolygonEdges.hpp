@@ -76,8 +76,18 @@ class PolygonTables {
  public:
   // Classifies every face of `g` against an image of width x height samples. Faces that cover
   // no sample of the image (above, below, left or right of it) are left out.
-  void build(const FrameGeometry& g, int width, int height);
+  void build(const FrameGeometry& g, int width, int height) {
+    build(g, width, height, 0, height, nullptr, g.faces.size());
+  }
+  // The same for the band of sample rows [rowBegin, rowEnd) of the image alone, as if the
+  // image began at rowBegin: a polygon or an edge that starts above it is classified as
+  // starting on its first row (and its stepping starts there, exactly). `faces`: the indices
+  // into g.faces of those that may reach the band (null: all `count`). triangleCount counts
+  // the faces whose first row in the image lies in the band.
+  void build(const FrameGeometry& g, int width, int height, int rowBegin, int rowEnd,
+             const uint32_t* faces, size_t count);
 
+  int rowBegin = 0;  // the band's rows: the buckets below are indexed by row - rowBegin
   // Sorted by top row: the polygons whose top row is y are polygons[polygonBucket[y],
   // polygonBucket[y + 1]). Polygon indices below are indices into this table.
   std::vector<ClassifiedPolygon> polygons;
@@ -96,5 +106,9 @@ class PolygonTables {
   std::vector<ClassifiedEdge> unsortedEdges_;
   std::vector<uint32_t> newIndex_;
 };
+
+// The sample rows [first, last] of the image that face f of `g` may reach (its corners' rows,
+// clamped); false when it reaches none. For BandLists::build.
+bool faceRows(const FrameGeometry& g, uint32_t f, int height, int& first, int& last);
 
 }  // namespace zrender

@@ -131,13 +131,16 @@ struct TriangleSetup {
   }
   // The two halves of setup(), for callers that may reject the triangle from its bounds alone:
   // the sample bounds (false when empty), then the edge functions from (minX, minY).
-  bool bounds(const FixedPoint v[3], int width, int height) {
+  bool bounds(const FixedPoint v[3], int width, int height) { return bounds(v, width, 0, height); }
+  // The same for sample rows [rowBegin, rowEnd) of the image only (a band of it: the edge
+  // functions are exact, so each sample is decided as in the whole image).
+  bool bounds(const FixedPoint v[3], int width, int rowBegin, int rowEnd) {
     const int32_t x0 = std::min({v[0].x, v[1].x, v[2].x}), x1 = std::max({v[0].x, v[1].x, v[2].x});
     const int32_t y0 = std::min({v[0].y, v[1].y, v[2].y}), y1 = std::max({v[0].y, v[1].y, v[2].y});
     minX = std::max(firstSampleAtOrAfter(x0), 0);
     maxX = std::min(lastSampleAtOrBefore(x1), width - 1);
-    minY = std::max(firstSampleAtOrAfter(y0), 0);
-    maxY = std::min(lastSampleAtOrBefore(y1), height - 1);
+    minY = std::max(firstSampleAtOrAfter(y0), rowBegin);
+    maxY = std::min(lastSampleAtOrBefore(y1), rowEnd - 1);
     return minX <= maxX && minY <= maxY;
   }
   void edges(const FixedPoint v[3]) {

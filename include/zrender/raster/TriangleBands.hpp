@@ -1,8 +1,11 @@
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
+#include "zrender/base/Threads.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
+#include "zrender/raster/RowBands.hpp"
 
 namespace zrender {
 
@@ -16,21 +19,41 @@ class TriangleBands {
 
   // The triangles of `g` that reach the width x height sample image, sorted by the band of
   // their first row (a counting sort: linear, stable). Valid until the next call.
-  const std::vector<ScreenTriangle>& sort(const FrameGeometry& g, int width, int height) {
+  const GeometryVector<ScreenTriangle>& sort(const FrameGeometry& g, int width, int height) {
     return sort(g, 0, width, height);
   }
   // The same for the triangles of `g` from index `first` on.
-  const std::vector<ScreenTriangle>& sort(const FrameGeometry& g, size_t first, int width,
-                                          int height);
+  const GeometryVector<ScreenTriangle>& sort(const FrameGeometry& g, size_t first, int width,
+                                             int height);
 
-  // After sort(): the bands, and the triangles of band b (first rows b * 32 to b * 32 + 31)
+  // The triangles of `g` that reach the image, each in every band it reaches rather than only
+  // its first row's, so that the bands can be drawn apart (by several threads at once, each
+  // triangle clipped to the band's rows): the same order within a band. Counted and copied by
+  // `threads`; valid until the next call.
+  const GeometryVector<ScreenTriangle>& bin(const FrameGeometry& g, int width, int height,
+                                            const Threads& threads);
+
+  // After sort() or bin(): the bands, and the triangles of band b (rows b * 32 to b * 32 + 31)
   // at indices [bandStart(b), bandStart(b + 1)) of the sorted triangles.
   int bandCount() const { return int(bandStart_.size()) - 1; }
   uint32_t bandStart(int band) const { return bandStart_[size_t(band)]; }
+  // Whether band `band` is the first a triangle reaches (after bin(): one band counts it).
+  static bool firstBandOf(const ScreenTriangle& t, int band) {
+    return firstRow(t) >> kBandShift == band;
+  }
+  // The first sample row a triangle reaches, 0 if it starts above the image.
+  static int firstRow(const ScreenTriangle& t) {
+    const FixedPoint* v = t.v;
+    return std::max(firstSampleAtOrAfter(std::min({v[0].y, v[1].y, v[2].y})), 0);
+  }
 
  private:
+  // Bands [first, last] that triangle `t` reaches; false when it misses the image.
+  static bool bandsOf(const ScreenTriangle& t, int width, int height, int& first, int& last);
+
   std::vector<uint32_t> band_, bandStart_, cursor_;  // scratch kept from frame to frame
-  std::vector<ScreenTriangle> sorted_;
+  GeometryVector<ScreenTriangle> sorted_;
+  BandPlacer placer_;  // bin()
 };
 
 }  // namespace zrender

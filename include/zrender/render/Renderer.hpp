@@ -3,6 +3,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -39,16 +40,18 @@ class Renderer {
   using SourceWrapper =
       std::function<std::unique_ptr<GeometrySource>(GeometrySource& transform, FaceBatches)>;
 
-  Renderer(const Scene& scene, const std::string& algorithm);
+  // `threads`: how many threads each frame may use (1: the calling thread alone).
+  Renderer(const Scene& scene, const std::string& algorithm, int threads = 1);
   // With an algorithm object built by the caller (measurements: an octree of another leaf
   // size), and optionally a source between the transform and the algorithm.
   Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm,
-           const SourceWrapper& wrap = nullptr);
+           const SourceWrapper& wrap = nullptr, int threads = 1);
 
   // Renders one frame; the results stay valid until the next call.
   FrameTimings renderFrame(const Camera& camera);
 
   double prepareMs() const { return prepareMs_; }
+  int threads() const { return threads_.count(); }
   int sampleScale() const { return sampleScale_; }
   const FrameBuffer& buffer() const { return buffer_; }
   const cv::Mat& color() const { return color_; }
@@ -60,6 +63,7 @@ class Renderer {
 
  private:
   const Scene& scene_;
+  Threads threads_;
   std::unique_ptr<VisibilityAlgorithm> algorithm_;
   Shader shader_;
   int sampleScale_;
@@ -69,6 +73,7 @@ class Renderer {
   GeometrySource* source_ = nullptr;  // the wrapper, else the transformer
   FrameBuffer buffer_;
   FrameGeometry geometry_;
+  std::vector<double> bandShadeMs_;  // per thread: shading inside the algorithm's tasks
   cv::Mat color_;
   RenderStats stats_;
 };

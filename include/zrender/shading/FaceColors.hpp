@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "zrender/base/Threads.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/scene/Scene.hpp"
 #include "zrender/scene/ShadingMode.hpp"
@@ -24,6 +25,8 @@ class FaceColors {
 
   // Face `faceId`'s packed color (0x00RRGGBB), computed on first sight in the frame.
   uint32_t color(uint32_t faceId);
+  // The same computed anew, writing nothing: for several threads at once.
+  uint32_t uncachedColor(uint32_t faceId) const;
 
   // How pixels of one color per face look their color up, decided at the first prepare() of a
   // frame for a buffer of `samples` samples.
@@ -33,12 +36,12 @@ class FaceColors {
                  // their rotation
     OnSight,     // color(id)
   };
-  // Decides the look-up and brings the table up to date with the geometry's faces.
-  Lookup prepare(size_t samples);
+  // Decides the look-up and brings the table up to date with the geometry's faces (computed
+  // by `threads` when given).
+  Lookup prepare(size_t samples, const Threads* threads = nullptr);
   const uint32_t* table() const { return table_.data(); }
 
  private:
-  uint32_t uncachedColor(uint32_t faceId) const;
   uint32_t normalColor(const Mat4& modelView, uint32_t local) const;  // of a mesh face
 
   const Scene& scene_;

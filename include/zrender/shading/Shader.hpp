@@ -1,10 +1,14 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
+#include <oneapi/tbb/collaborative_call_once.h>
+
 #include <opencv2/core.hpp>
 
+#include "zrender/base/Threads.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/scene/Camera.hpp"
@@ -43,13 +47,31 @@ class Shader {
              const FrameGeometry* geometry = nullptr);
   void rowsFinal(int sampleRows);
   void finish();
+  // finish() with the rows shared out among `threads` (with one thread, finish() itself).
+  void finish(const Threads& threads);
+  // With several threads, before finish(threads): colors the pixel rows that sample rows
+  // [first, end) complete, from any of `threads` (disjoint rows at once), when the frame's
+  // faces can be prepared before its buffer is final (not in depth mode, nor for surfaces of
+  // a geometry too big to set up whole): the first call prepares them, the others wait.
+  // finish(threads) colors the rows left.
+  void rowsReady(int first, int end, const Threads& threads);
 
  private:
-  // The packed color (0x00RRGGBB) of a sample, in the modes without a surface.
-  uint32_t sampleColor(DepthKey key);
+  // The packed color (0x00RRGGBB) of a sample, in the modes without a surface. `shared`: from
+  // one of several threads at once, which then write nothing but the image (every face in the
+  // buffer is prepared before), here and in the functions below.
+  uint32_t sampleColor(DepthKey key, bool shared);
+  uint32_t sharedFaceColor(uint32_t id) const;
   // The packed colors of sample row y, into out[0, buffer width).
-  void colorSampleRow(int y, uint32_t* out);
+  void colorSampleRow(int y, uint32_t* out, bool shared);
   void shadePixelRows(int endRow);  // rows [shadedRows_, endRow) of the image
+  // Colors pixel rows [firstRow, endRow), with `rowColors` as scratch.
+  void paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColors, bool shared);
+  // Prepares the faces' colors or surfaces for shared use; false when that needs the final
+  // buffer (prepareFaces(threads, true) then does).
+  bool prepareFaces(const Threads& threads, bool bufferFinal);
+  // The least and greatest depth of samples [begin, end) of the buffer (lo 1, hi 0: none).
+  void findDepthRange(size_t begin, size_t end, float& lo, float& hi) const;
 
   const Scene& scene_;
   ShadingMode mode_;
@@ -66,10 +88,15 @@ class Shader {
   uint32_t background_ = 0;
   const FrameGeometry* geometry_ = nullptr;  // the frame's faces, when given
   bool perFace_ = false;                     // one sample per pixel, one color per face
-  float depthLo_ = 0.0f;                     // depth mode: the frame's depth range
+  FaceColors::Lookup lookup_ = FaceColors::Lookup::OnSight;  // after FaceColors::prepare()
+  float depthLo_ = 0.0f;                                     // depth mode: the frame's depth range
   double depthRange_ = 1.0;
   std::vector<Mat4> modelView_;      // per instance
   std::vector<uint32_t> rowColors_;  // two sample rows of packed colors
+  // With several threads: whether faces are prepared (rowsReady), and the pixel rows colored.
+  std::unique_ptr<tbb::collaborative_once_flag> prepared_;
+  bool earlyShading_ = false;
+  std::vector<uint8_t> rowDone_;
 };
 
 }  // namespace zrender

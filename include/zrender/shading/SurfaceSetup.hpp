@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "zrender/base/Threads.hpp"
+#include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Scene.hpp"
@@ -40,8 +42,13 @@ class SurfaceSetup {
   // Sets up every face of `geometry` (the frame's faces, which hold those in the buffer) in a
   // batch, each face's data fetched into cache a few faces ahead, instead of one cache miss
   // after another as rows meet the faces; only when the faces are few for the buffer's
-  // `samples` (a grid's many hidden faces are set up on first sight). Once per frame.
-  void setUpFaces(const FrameGeometry& geometry, size_t samples);
+  // `samples` (a grid's many hidden faces are set up on first sight). Once per frame; true
+  // when the batch was set up.
+  bool setUpFaces(const FrameGeometry& geometry, size_t samples);
+  // Sets up every face in `fb`, so that several threads can then color its rows at once:
+  // setUpFaces() when `geometry` is given and that sets them up, else the faces found in the
+  // buffer (scanned by `threads`).
+  void setUpVisible(const FrameBuffer& fb, const FrameGeometry* geometry, const Threads& threads);
 
  private:
   uint32_t setUp(uint32_t faceId);
@@ -81,6 +88,7 @@ class SurfaceSetup {
   std::vector<SurfaceFan> fans_;
   std::vector<Vec3> cornerPosition_, cornerNormal_;  // scratch: one face's corners, view space
   bool batchDone_ = false;                           // setUpFaces() ran in this frame
+  bool batched_ = false;                             // and set up every face of its geometry
 };
 
 }  // namespace zrender

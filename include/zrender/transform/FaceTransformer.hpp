@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "zrender/base/Threads.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Scene.hpp"
 #include "zrender/transform/FaceAssembler.hpp"
@@ -29,6 +30,10 @@ class FaceTransformer : public GeometrySource {
   // The same, with beginFrame(camera) done.
   FaceTransformer(const Scene& scene, const Camera& camera, int sampleScale, bool cull);
 
+  // The threads pullAll() may spread its work over (null or one: the calling thread alone);
+  // its geometry is the same whatever their number.
+  void setThreads(const Threads* threads) { threads_ = threads; }
+
   void beginFrame(const Camera& camera) override;
   void pullAll(FrameGeometry& out) override;
   void pullInstance(uint32_t instance, FrameGeometry& out,
@@ -46,6 +51,17 @@ class FaceTransformer : public GeometrySource {
  private:
   void projectInstance(uint32_t instance);
   void projectBatch(uint32_t batch);
+  // pullAll() on several threads: the faces in chunks, each into geometry of its own, then
+  // joined in face id order.
+  void pullAllParallel(FrameGeometry& out);
+  // A chunk's part of pullAllParallel: faces [faceBegin, faceEnd) of `instance`, whose
+  // vertices `vertices` holds, by `assembler`.
+  void assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,
+                     const VertexView& vertices, FaceAssembler& assembler,
+                     FrameGeometry& out) const;
+  // Projects the vertices of slots [begin, end) of `instance` into state and window.
+  void projectSlots(uint32_t instance, size_t begin, size_t end, VertexState* state,
+                    Vec3* window) const;
 
   const Scene& scene_;
   MeshLayout layout_;
@@ -57,6 +73,16 @@ class FaceTransformer : public GeometrySource {
   double transformMs_ = 0.0;
   std::vector<VertexState> instanceState_, batchState_;  // the vertices of the last pull
   std::vector<Vec3> instanceWindow_, batchWindow_;
+
+  // pullAllParallel's: the threads, each one's assembler and vertices, each chunk's geometry.
+  const Threads* threads_ = nullptr;
+  struct Worker {
+    FaceAssembler assembler;
+    std::vector<VertexState> state;
+    std::vector<Vec3> window;
+  };
+  std::vector<Worker> workers_;
+  std::vector<FrameGeometry> chunks_;
 };
 
 }  // namespace zrender

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "zrender/raster/PolygonEdges.hpp"
+#include "zrender/raster/RowBands.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -13,7 +14,8 @@ namespace zrender {
 // own active edges by column (a polygon with two, as every triangle has, takes the lesser as the
 // left end instead) and fills its spans pairwise (even-odd) into a one-row depth buffer: the frame
 // buffer's current row itself (copying a separate row buffer out costs a copy per row), so only
-// that row is touched while it is built.
+// that row is touched while it is built. With several threads, the image is cut into bands of
+// rows, each drawn by one thread from tables of its own (PolygonTables for a band).
 class ScanlineAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "scanline"; }
@@ -26,12 +28,24 @@ class ScanlineAlgorithm : public VisibilityAlgorithm {
     int32_t lastRow;  // the edge leaves the list after this row
   };
 
-  PolygonTables tables_;
-  std::vector<uint32_t> activePolygons_;  // indices into tables_.polygons
-  // Active edges of polygon p live in activeEdges_[p.edgeBegin, p.edgeBegin + activeCount_[p]):
-  // a polygon never has more active edges than edges, so the slots never overflow.
-  std::vector<ActiveEdge> activeEdges_;
-  std::vector<uint32_t> activeCount_;
+  // What drawing a band of rows needs (the whole image, with one thread).
+  struct Band {
+    PolygonTables tables;
+    std::vector<uint32_t> activePolygons;  // indices into tables.polygons
+    // Active edges of polygon p live in activeEdges[p.edgeBegin, p.edgeBegin +
+    // activeCount[p]): a polygon never has more active edges than edges, so the slots never
+    // overflow.
+    std::vector<ActiveEdge> activeEdges;
+    std::vector<uint32_t> activeCount;
+  };
+  // Draws rows [band.tables.rowBegin, rowEnd) from band.tables.
+  void drawRows(Band& band, int rowEnd, const FrameInput& input, FrameBuffer& fb,
+                RenderStats& stats) const;
+
+  Band whole_;                   // one thread
+  std::vector<Band> perThread_;  // several: each thread's
+  BandLists faceLists_;          // several: the faces of each band
+  std::vector<RenderStats> bandStats_;
 };
 
 }  // namespace zrender

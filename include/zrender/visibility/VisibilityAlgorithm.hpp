@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "zrender/base/Threads.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/raster/RenderStats.hpp"
@@ -29,7 +30,19 @@ struct FrameInput {
   // read back from memory afterwards. Optional both ways: may be empty, and an algorithm need
   // not call it.
   std::function<void(int)> onRowsFinal = nullptr;
+  // The threads the algorithm may use (null: one). With more than one, it renders in
+  // parallel however suits it, filling the same buffer as with one (docs/design.md, Threads),
+  // and calls rowsReady() instead of rowsFinal(); rows it does not report are shaded after it.
+  const Threads* threads = nullptr;
+  // With several threads: sample rows [first, end) hold their final keys, so that they are
+  // shaded by the thread that drew them while still in its cache. Any thread may call it; the
+  // rows of different calls never overlap. May be empty.
+  std::function<void(int, int)> onRowsReady = nullptr;
 
+  bool parallel() const { return threads != nullptr && threads->parallel(); }
+  void rowsReady(int first, int end) const {
+    if (onRowsReady) onRowsReady(first, end);
+  }
   void rowsFinal(int rows) const {
     if (onRowsFinal) onRowsFinal(rows);
   }

@@ -1,0 +1,113 @@
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "zrender/base/Threads.hpp"
+
+namespace zrender {
+
+// Bands per thread for the algorithms that draw bands of rows from tables of their own (the
+// scan-line ones): enough for the threads to balance uneven bands, few enough that the faces
+// crossing band edges, classified in each band they reach, stay a small share.
+constexpr int kBandsPerThread = 4;
+
+// An image's sample rows cut into bands of about equal height, for algorithms that draw the
+// bands apart (one thread each) and need every item that reaches a band in that band's list.
+class RowBands {
+ public:
+  // `height` rows in `count` bands (at least one), each a multiple of `align` rows but the last.
+  RowBands(int height, int count, int align = 1) : height_(std::max(height, 0)) {
+    count = std::max(count, 1);
+    rowsPerBand_ = std::max(align, (height_ + count - 1) / count);
+    rowsPerBand_ = (rowsPerBand_ + align - 1) / align * align;
+    count_ = std::max(1, (height_ + rowsPerBand_ - 1) / rowsPerBand_);
+  }
+  int count() const { return count_; }
+  int rowBegin(int band) const { return band * rowsPerBand_; }
+  int rowEnd(int band) const { return std::min(height_, (band + 1) * rowsPerBand_); }
+  int bandOf(int row) const { return row / rowsPerBand_; }
+
+ private:
+  int height_, rowsPerBand_, count_;
+};
+
+// Items 0..n-1 (triangles, faces) placed in every band of rows they reach, in increasing order
+// within a band: a counting sort over chunks of items, counted and placed by several threads.
+class BandPlacer {
+ public:
+  // rowsOf(i, first, last) gives item i's rows [first, last] inside the image, or false when
+  // it reaches none; size(total) is told how many places there are, then place(i, k) puts
+  // item i at position k, band b's items being at positions [start(b), start(b + 1)).
+  template <typename RowsOf, typename Size, typename Place>
+  void place(size_t n, const RowBands& bands, const Threads& threads, const RowsOf& rowsOf,
+             const Size& size, const Place& place) {
+    constexpr size_t kChunk = 4096;
+    constexpr uint64_t kNone = ~uint64_t(0);
+    const size_t count = size_t(bands.count()), chunks = (n + kChunk - 1) / kChunk;
+    cursor_.assign(chunks * count, 0);
+    range_.resize(n);  // each item's first and last band, from the counting pass
+    threads.forEach(chunks, [&](size_t c) {
+      uint32_t* counts = cursor_.data() + c * count;
+      for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+        int first = 0, last = 0;
+        if (!rowsOf(i, first, last)) {
+          range_[i] = kNone;
+          continue;
+        }
+        const uint32_t b0 = uint32_t(bands.bandOf(first)), b1 = uint32_t(bands.bandOf(last));
+        range_[i] = uint64_t(b0) << 32 | b1;
+        for (uint32_t b = b0; b <= b1; ++b) ++counts[b];
+      }
+    });
+    // The counts become each (chunk, band)'s first position.
+    start_.assign(count + 1, 0);
+    uint32_t total = 0;
+    for (size_t b = 0; b < count; ++b) {
+      start_[b] = total;
+      for (size_t c = 0; c < chunks; ++c) {
+        const uint32_t k = cursor_[c * count + b];
+        cursor_[c * count + b] = total;
+        total += k;
+      }
+    }
+    start_[count] = total;
+    size(total);
+    threads.forEach(chunks, [&](size_t c) {
+      uint32_t* at = cursor_.data() + c * count;
+      for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+        if (range_[i] == kNone) continue;
+        for (uint32_t b = uint32_t(range_[i] >> 32); b <= uint32_t(range_[i]); ++b)
+          place(i, at[b]++);
+      }
+    });
+  }
+
+  uint32_t start(int band) const { return start_[size_t(band)]; }
+  const std::vector<uint32_t>& starts() const { return start_; }
+
+ private:
+  std::vector<uint32_t> start_, cursor_;
+  std::vector<uint64_t> range_;
+};
+
+// The items of each band, as BandPlacer places them.
+class BandLists {
+ public:
+  template <typename RowsOf>
+  void build(size_t n, const RowBands& bands, const Threads& threads, const RowsOf& rowsOf) {
+    placer_.place(
+        n, bands, threads, rowsOf, [&](uint32_t total) { items_.resize(total); },
+        [&](size_t i, uint32_t k) { items_[k] = uint32_t(i); });
+  }
+
+  const uint32_t* items(int band) const { return items_.data() + placer_.start(band); }
+  size_t size(int band) const { return placer_.start(band + 1) - placer_.start(band); }
+
+ private:
+  BandPlacer placer_;
+  std::vector<uint32_t> items_;
+};
+
+}  // namespace zrender

@@ -1,0 +1,26 @@
+#include "zrender/base/Threads.hpp"
+
+#include <oneapi/tbb/info.h>
+
+#include <algorithm>
+
+namespace zrender {
+
+Threads::Threads(int count) : count_(std::max(count, 1)) {
+  if (count_ == 1) return;
+  if (count_ > hardwareThreads())
+    limit_ = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                   size_t(count_));
+  arena_ = std::make_unique<tbb::task_arena>(count_);
+}
+
+int Threads::slot() const {
+  const int index = tbb::this_task_arena::current_thread_index();
+  return index == tbb::task_arena::not_initialized ? 0 : index;
+}
+
+int hardwareThreads() {
+  return std::max(tbb::info::default_concurrency(), 1);
+}
+
+}  // namespace zrender
