@@ -77,12 +77,13 @@ ZRENDER_AVX2 TileMax tileMaxAvx2(const DepthKey* first, size_t stride, int rows)
   return out;  // not reached: the maximum is in some row
 }
 
-void DepthPyramid::begin(FrameBuffer& fb) {
-  fb_ = &fb;
+void DepthPyramid::begin(FrameBuffer& fb, int rowBegin, int rowEnd) {
+  keys_ = fb.row(rowBegin);
+  rowOffset_ = rowBegin;
   avx2_ = cpuHasAvx2();
-  if (fb.width() != width_ || fb.height() != height_ || levels_.empty()) {
+  if (fb.width() != width_ || rowEnd - rowBegin != height_ || levels_.empty()) {
     width_ = fb.width();
-    height_ = fb.height();
+    height_ = rowEnd - rowBegin;
     tilesX_ = (width_ + kTileSize - 1) >> kTileShift;
     tilesY_ = (height_ + kTileSize - 1) >> kTileShift;
     levels_.clear();
@@ -107,7 +108,7 @@ void DepthPyramid::begin(FrameBuffer& fb) {
 
 void DepthPyramid::clearTileRow(int ty) {
   const int y0 = ty << kTileShift, y1 = std::min(y0 + kTileSize, height_);
-  for (int y = y0; y < y1; ++y) std::fill(fb_->row(y), fb_->row(y) + width_, kClearKey);
+  for (int y = y0; y < y1; ++y) std::fill(rowPointer(y), rowPointer(y) + width_, kClearKey);
   // Any sample holds the maximum of a clear tile; the last one is reached last by triangles
   // drawn top to bottom, which postpones the first rescan.
   uint32_t* argMax = tileArgMax_.data() + size_t(ty) * tilesX_;
@@ -127,7 +128,7 @@ void DepthPyramid::rescanTile(int tx, int ty) {
     // sparse grid of its samples is still clear (bottom rows first: triangles come top to
     // bottom), it holds the maximum, and the tile need not be scanned.
     for (int y = y1 - 1; y >= y0; y -= 5) {
-      const DepthKey* row = fb_->row(y);
+      const DepthKey* row = rowPointer(y);
       for (int x = x1 - 1; x >= x0; x -= 5) {
         if (row[x] == kClearKey) {
           tileArgMax_[t] = uint32_t(size_t(y) * size_t(width_) + size_t(x));
@@ -137,8 +138,8 @@ void DepthPyramid::rescanTile(int tx, int ty) {
     }
   }
   const TileMax m = avx2_ && x1 - x0 == kTileSize
-                        ? tileMaxAvx2(fb_->row(y0) + x0, size_t(width_), y1 - y0)
-                        : tileMax(fb_->row(y0) + x0, size_t(width_), y1 - y0, x1 - x0);
+                        ? tileMaxAvx2(rowPointer(y0) + x0, size_t(width_), y1 - y0)
+                        : tileMax(rowPointer(y0) + x0, size_t(width_), y1 - y0, x1 - x0);
   const DepthKey best = m.key;
   tileArgMax_[t] = uint32_t(size_t(y0 + m.row) * size_t(width_) + size_t(x0 + m.column));
   if (best == levels_[0][t]) return;

@@ -45,7 +45,8 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
     buffer_.resize(geometry_.width, geometry_.height);
     {
       ScopedTimer shading(shadeMs);
-      shader_.begin(buffer_, camera, sampleScale_, color_, &geometry_);
+      shader_.begin(buffer_, camera, sampleScale_, color_,
+                    algorithm_->gathersFaces(threads_.parallel()) ? &geometry_ : nullptr);
     }
     // Rows finished by the algorithm are shaded while their keys are still in cache; that time
     // is shading time, not the algorithm's. With several threads, each thread's share of it

@@ -99,6 +99,12 @@ FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
     table_.resize(size_t(scene_.faceCount()) + 1);
     table_[0] = background_;
     if (!geometry_) {
+      if (threads && threads->parallel()) {
+        threads->forRanges(scene_.faceCount(), 4096, [&](size_t begin, size_t end) {
+          for (size_t id = begin; id < end; ++id) table_[id + 1] = uncachedColor(uint32_t(id));
+        });
+        return lookup_;
+      }
       for (uint32_t id = 0; id < scene_.faceCount(); ++id) table_[size_t(id) + 1] = color(id);
       return lookup_;
     }

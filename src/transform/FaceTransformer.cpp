@@ -34,6 +34,20 @@ void FaceTransformer::beginFrame(const Camera& camera) {
     mvp_.push_back(viewProjection * scene_.modelMatrix(k));
   ++frame_;
   assembler_.beginFrame(camera.width, camera.height, layout_.slotPositions(), mvp_);
+  if (threads_ && threads_->parallel()) {
+    if (workers_.size() != size_t(threads_->count()))
+      workers_.assign(size_t(threads_->count()), Worker{assembler_, {}, {}, 0.0});
+    for (Worker& w : workers_) {
+      w.assembler.beginFrame(camera.width, camera.height, layout_.slotPositions(), mvp_);
+      w.batchMs = 0.0;
+    }
+  }
+}
+
+double FaceTransformer::transformMs() const {
+  double ms = transformMs_;
+  for (const Worker& w : workers_) ms += w.batchMs / double(workers_.size());
+  return ms;
 }
 
 InstanceView FaceTransformer::viewOfInstance(uint32_t instance) const {
@@ -43,7 +57,7 @@ InstanceView FaceTransformer::viewOfInstance(uint32_t instance) const {
 
 void FaceTransformer::pullAll(FrameGeometry& out) {
   if (threads_ && threads_->parallel()) {
-    pullAllParallel(out);
+    pullParallel(-1, out, nullptr);
     return;
   }
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k) pullInstance(k, out);
@@ -112,35 +126,34 @@ void appendChunk(const FrameGeometry& chunk, const size_t base[3], FrameGeometry
 
 }  // namespace
 
-void FaceTransformer::pullAllParallel(FrameGeometry& out) {
+void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter) {
   ScopedTimer timer(transformMs_);
   const Threads& threads = *threads_;
-  const uint32_t instances = scene_.instanceCount();
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
-  if (workers_.size() != size_t(threads.count()))
-    workers_.assign(size_t(threads.count()), Worker{assembler_, {}, {}});
-  for (Worker& w : workers_)
-    w.assembler.beginFrame(viewport_.width, viewport_.height, layout_.slotPositions(), mvp_);
   // A grid: one chunk per instance, each projecting its own vertices. One instance: its
   // vertices projected by all threads, then its faces in chunks.
-  const bool single = instances == 1;
-  const uint32_t chunks = single ? (nf + kChunkFaces - 1) / kChunkFaces : instances;
+  const bool single = instance >= 0 || scene_.instanceCount() == 1;
+  const uint32_t only = instance >= 0 ? uint32_t(instance) : 0;
+  const uint32_t chunks = single ? (nf + kChunkFaces - 1) / kChunkFaces : scene_.instanceCount();
   if (chunks_.size() < chunks) chunks_.resize(chunks);
-  const InstanceView firstView = viewOfInstance(0);
-  if (single && !firstView.outside) {
+  const InstanceView onlyView = viewOfInstance(only);
+  HiddenTiles hidden;
+  if (single && !onlyView.outside) {
+    if (filter && onlyView.nearest > 0.0f)
+      hidden = filter->beginInstance(onlyView.nearest, onlyView.area);
     const size_t slots = layout_.slotPositions().size();
     instanceState_.resize(slots);
     instanceWindow_.resize(slots);
     threads.forRanges(slots, 4096, [&](size_t begin, size_t end) {
-      projectSlots(0, begin, end, instanceState_.data(), instanceWindow_.data());
+      projectSlots(only, begin, end, instanceState_.data(), instanceWindow_.data());
     });
   }
   threads.forEach(chunks, [&](size_t c) {
     FrameGeometry& chunk = chunks_[c];
     chunk.clear();
     Worker& w = workers_[size_t(threads.slot())];
-    const uint32_t instance = single ? 0 : uint32_t(c);
-    const InstanceView view = single ? firstView : viewOfInstance(instance);
+    const uint32_t k = single ? only : uint32_t(c);
+    const InstanceView view = single ? onlyView : viewOfInstance(k);
     if (view.outside) {
       // Every face would be clipped away (those of fewer than 3 corners: degenerate).
       if (single && c > 0) return;
@@ -150,17 +163,19 @@ void FaceTransformer::pullAllParallel(FrameGeometry& out) {
     }
     if (single) {
       const uint32_t begin = uint32_t(c) * kChunkFaces;
-      assembleFaces(0, begin, std::min(nf, begin + kChunkFaces),
-                    VertexView{instanceState_.data(), instanceWindow_.data(), nullptr, nullptr, 0},
-                    w.assembler, chunk);
+      w.assembler.setFilter(filter, hidden);
+      assembleFaces(
+          only, begin, std::min(nf, begin + kChunkFaces),
+          VertexView{instanceState_.data(), instanceWindow_.data(), nullptr, nullptr, only},
+          w.assembler, chunk);
+      w.assembler.setFilter(nullptr, HiddenTiles());
       return;
     }
     const size_t slots = layout_.slotPositions().size();
     w.state.resize(slots);
     w.window.resize(slots);
-    projectSlots(instance, 0, slots, w.state.data(), w.window.data());
-    assembleFaces(instance, 0, nf,
-                  VertexView{w.state.data(), w.window.data(), nullptr, nullptr, instance},
+    projectSlots(k, 0, slots, w.state.data(), w.window.data());
+    assembleFaces(k, 0, nf, VertexView{w.state.data(), w.window.data(), nullptr, nullptr, k},
                   w.assembler, chunk);
   });
   // Joined in chunk order, which is face id order: the geometry of one thread exactly.
@@ -186,6 +201,10 @@ void FaceTransformer::pullAllParallel(FrameGeometry& out) {
 }
 
 void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter) {
+  if (threads_ && threads_->parallel()) {
+    pullParallel(instance, out, filter);
+    return;
+  }
   ScopedTimer timer(transformMs_);
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
@@ -214,13 +233,14 @@ void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, Triang
   assembler_.setFilter(nullptr, HiddenTiles());
 }
 
-void FaceTransformer::projectBatch(uint32_t batch) {
+void FaceTransformer::projectBatch(uint32_t batch, std::vector<VertexState>& state,
+                                   std::vector<Vec3>& window) const {
   const MeshLayout::Batches& b = layout_.batches();
   const std::vector<Vec3>& positions = layout_.slotPositions();
   const uint32_t v0 = b.vertexStart[batch], count = b.vertexStart[batch + 1] - v0;
-  if (batchState_.size() < count) {
-    batchState_.resize(count);
-    batchWindow_.resize(count);
+  if (state.size() < count) {
+    state.resize(count);
+    window.resize(count);
   }
   const uint32_t* slot = b.vertexSlot.data() + v0;
   const uint32_t* instance = b.vertexInstance.data() + v0;
@@ -231,28 +251,32 @@ void FaceTransformer::projectBatch(uint32_t batch) {
       if (instance[i] != instance[i + 3] || instance[i + 1] != instance[i] ||
           instance[i + 2] != instance[i]) {
         for (uint32_t j = i; j < i + 4; ++j)
-          projectVertex(mvp_[instance[j]], positions[slot[j]], viewport_, frame_, batchState_[j],
-                        batchWindow_[j]);
+          projectVertex(mvp_[instance[j]], positions[slot[j]], viewport_, frame_, state[j],
+                        window[j]);
         continue;
       }
       const Vec3* const four[4] = {&positions[slot[i]], &positions[slot[i + 1]],
                                    &positions[slot[i + 2]], &positions[slot[i + 3]]};
-      projectVertices4Avx2(mvp_[instance[i]], four, viewport_, frame_, &batchState_[i],
-                           &batchWindow_[i]);
+      projectVertices4Avx2(mvp_[instance[i]], four, viewport_, frame_, &state[i], &window[i]);
     }
   }
   for (; i < count; ++i)
-    projectVertex(mvp_[instance[i]], positions[slot[i]], viewport_, frame_, batchState_[i],
-                  batchWindow_[i]);
+    projectVertex(mvp_[instance[i]], positions[slot[i]], viewport_, frame_, state[i], window[i]);
 }
 
 void FaceTransformer::pullBatch(uint32_t batch, FrameGeometry& out) {
-  ScopedTimer timer(transformMs_);
+  // With several threads, each its own scratch and clock (transformMs()).
+  const bool shared = threads_ && threads_->parallel();
+  Worker* w = shared ? &workers_[size_t(threads_->slot())] : nullptr;
+  ScopedTimer timer(shared ? w->batchMs : transformMs_);
+  std::vector<VertexState>& batchState = shared ? w->state : batchState_;
+  std::vector<Vec3>& batchWindow = shared ? w->window : batchWindow_;
+  FaceAssembler& assembler = shared ? w->assembler : assembler_;
   const MeshLayout::Batches& b = layout_.batches();
-  projectBatch(batch);
+  projectBatch(batch, batchState, batchWindow);
   const uint32_t v0 = b.vertexStart[batch];
-  assembler_.setVertices(VertexView{batchState_.data(), batchWindow_.data(),
-                                    b.vertexSlot.data() + v0, b.vertexInstance.data() + v0, 0});
+  assembler.setVertices(VertexView{batchState.data(), batchWindow.data(), b.vertexSlot.data() + v0,
+                                   b.vertexInstance.data() + v0, 0});
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
   const Mesh& mesh = *scene_.mesh;
@@ -262,7 +286,7 @@ void FaceTransformer::pullBatch(uint32_t batch, FrameGeometry& out) {
     const uint32_t faceId = b.faces[f];
     // The stored count spares a division on the face's path (0: too many to store).
     const uint32_t n = b.faceCorners[f] ? b.faceCorners[f] : mesh.cornerCount(faceId % nf);
-    assembler_.append(faceId, FaceCorners{local, 0}, n, out);
+    assembler.append(faceId, FaceCorners{local, 0}, n, out);
     local += n;
   }
 }

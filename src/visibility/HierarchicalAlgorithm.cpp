@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "zrender/raster/RowBands.hpp"
 #include "zrender/raster/TriangleFill.hpp"
 
 namespace zrender {
@@ -41,6 +42,57 @@ class PyramidFilter : public TriangleFilter {
   SampleRect marked_;                 // where hiddenTiles_ may hold nonzero bytes
 };
 
+// The transform's filter with several threads, asked by them all at once: a triangle face is
+// dropped when the pyramid of every band it reaches proves it hidden there.
+class BandsFilter : public TriangleFilter {
+ public:
+  BandsFilter(const std::vector<HzbRasterizer>& rasterizers, const RowBands& bands,
+              const FrameBuffer& fb, const Threads& threads, std::vector<RenderStats>& stats)
+      : rasterizers_(rasterizers), bands_(bands), fb_(fb), threads_(threads), stats_(stats) {
+    const int tilesX = (fb.width() + DepthPyramid::kTileSize - 1) >> DepthPyramid::kTileShift;
+    const int tilesY = (fb.height() + DepthPyramid::kTileSize - 1) >> DepthPyramid::kTileShift;
+    hiddenTiles_.assign(size_t(tilesX) * size_t(tilesY), 0);
+    tilesX_ = tilesX;
+  }
+  // As PyramidFilter's, each band marking its own rows of tiles.
+  HiddenTiles beginInstance(float nearestDepth, const SampleRect& area) override {
+    mark(marked_, 0);
+    marked_ = area;
+    mark(area, makeDepthKey(nearestDepth, 0));
+    return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, tilesX_};
+  }
+  bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
+    const SampleRect r = sampleBounds(v[0], v[1], v[2], fb_.width(), fb_.height());
+    if (r.empty()) return true;
+    RenderStats ignored;  // rejects() counts each band's verdict; the face counts once
+    for (int b = bands_.bandOf(r.minY); b <= bands_.bandOf(r.maxY); ++b)
+      if (!rasterizers_[size_t(b)].rejects(v, nearestDepth, faceId, ignored)) return false;
+    ++stats_[size_t(threads_.slot())].trianglesHzbCulled;
+    return true;
+  }
+
+ private:
+  // Sets the tiles of `area` to whether `key` is behind them (0: to 0).
+  void mark(const SampleRect& area, DepthKey key) {
+    if (area.maxX < area.minX || area.maxY < area.minY) return;
+    for (int b = bands_.bandOf(area.minY); b <= bands_.bandOf(area.maxY); ++b) {
+      const int minY = std::max(area.minY, bands_.rowBegin(b));
+      const int maxY = std::min(area.maxY, bands_.rowEnd(b) - 1);
+      rasterizers_[size_t(b)].pyramid().tilesBehind(key, area.minX, minY, area.maxX, maxY,
+                                                    hiddenTiles_);
+    }
+  }
+
+  const std::vector<HzbRasterizer>& rasterizers_;
+  const RowBands& bands_;
+  const FrameBuffer& fb_;
+  const Threads& threads_;
+  std::vector<RenderStats>& stats_;   // per thread
+  std::vector<uint8_t> hiddenTiles_;  // per tile of the image
+  int tilesX_ = 0;
+  SampleRect marked_;  // where hiddenTiles_ may hold nonzero bytes
+};
+
 }  // namespace
 
 FaceBatches HierarchicalAlgorithm::prepare(const Scene& scene) {
@@ -48,9 +100,8 @@ FaceBatches HierarchicalAlgorithm::prepare(const Scene& scene) {
   return FaceBatches();
 }
 
-void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+void HierarchicalAlgorithm::orderInstances(const FrameInput& input) {
   const Scene& scene = input.scene;
-  FrameGeometry& g = input.geometry;
   // Nearest instance first (by the centre of its box), which fills the pyramid with what hides
   // the others; the order never changes the result.
   const Vec3 eye = input.camera.eye;
@@ -65,7 +116,15 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
   }
   std::stable_sort(instances_.begin(), instances_.end(),
                    [&](uint32_t a, uint32_t b) { return distance[a] < distance[b]; });
+}
 
+void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+  orderInstances(input);
+  if (input.parallel()) {
+    renderBands(input, fb, stats);
+    return;
+  }
+  FrameGeometry& g = input.geometry;
   rasterizer_.begin(fb);
   PyramidFilter filter(rasterizer_, stats);
   for (size_t i = 0; i < instances_.size(); ++i) {
@@ -89,6 +148,43 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
     }
   }
   rasterizer_.finish();
+  stats.trianglesHzbCulled += g.counters.filtered;
+}
+
+void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
+  const Threads& threads = *input.threads;
+  FrameGeometry& g = input.geometry;
+  const RowBands bands(fb.height(), threads.count() * kBandsPerThread, DepthPyramid::kTileSize);
+  bandRasterizers_.resize(size_t(bands.count()));
+  for (int b = 0; b < bands.count(); ++b)
+    bandRasterizers_[size_t(b)].begin(fb, bands.rowBegin(b), bands.rowEnd(b));
+  bandStats_.assign(size_t(bands.count()), RenderStats());
+  threadStats_.assign(size_t(threads.count()), RenderStats());
+  BandsFilter filter(bandRasterizers_, bands, fb, threads, threadStats_);
+  for (size_t i = 0; i < instances_.size(); ++i) {
+    const size_t first = g.triangles.size();
+    input.source.pullInstance(instances_[i], g, i > 0 ? &filter : nullptr);
+    // The instance's triangles in each band they reach, drawn by the bands at once.
+    bandTriangles_.build(
+        g.triangles.size() - first, bands, threads, [&](size_t t, int& top, int& bottom) {
+          const FixedPoint* v = g.triangles[first + t].v;
+          const SampleRect r = sampleBounds(v[0], v[1], v[2], fb.width(), fb.height());
+          top = r.minY;
+          bottom = r.maxY;
+          return !r.empty();
+        });
+    threads.forEach(size_t(bands.count()), [&](size_t b) {
+      const uint32_t* t = bandTriangles_.items(int(b));
+      for (size_t k = 0; k < bandTriangles_.size(int(b)); ++k)
+        bandRasterizers_[b].drawTriangle(g.triangles[first + t[k]], bandStats_[b]);
+    });
+  }
+  threads.forEach(size_t(bands.count()), [&](size_t b) {
+    bandRasterizers_[b].finish();
+    input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
+  });
+  for (const RenderStats& s : bandStats_) stats += s;
+  for (const RenderStats& s : threadStats_) stats += s;
   stats.trianglesHzbCulled += g.counters.filtered;
 }
 

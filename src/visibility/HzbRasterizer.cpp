@@ -6,7 +6,7 @@ void HzbRasterizer::drawTriangle(const ScreenTriangle& t, RenderStats& stats) {
   // The sample bounds before the edge functions: a rejected triangle costs the bounds and a
   // few loads.
   TriangleSetup s;
-  if (!s.bounds(t.v, fb_->width(), fb_->height())) return;  // no sample centre of the image
+  if (!s.bounds(t.v, fb_->width(), rowBegin_, rowEnd_)) return;  // no sample centre in the rows
   // Every sample the triangle covers lies in these bounds, so a nearest key behind the
   // pyramid there means every depth test would fail (ids included). First the key of the
   // nearest corner, below which no sample's depth goes (DepthPlane's clamp): for a small

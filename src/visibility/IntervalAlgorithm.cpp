@@ -24,9 +24,26 @@ inline DepthKey capped(DepthKey k) {
 
 void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   input.source.pullAll(input.geometry);
+  const FrameGeometry& g = input.geometry;
   const int width = fb.width(), height = fb.height();
-  tables_.build(input.geometry, width, height);
-  stats.trianglesRasterized += tables_.triangleCount;
+  if (!input.parallel()) {
+    whole_.tables_.build(g, width, height);
+    stats.trianglesRasterized += whole_.tables_.triangleCount;
+    whole_.drawRows(height, input, fb, stats);
+    return;
+  }
+  perThread_.resize(size_t(input.threads->count()));
+  bands_.draw(
+      input, width, height, stats,
+      [&](int thread) -> PolygonTables& { return perThread_[size_t(thread)].tables_; },
+      [&](int thread, int rowEnd, RenderStats& bandStats) {
+        perThread_[size_t(thread)].drawRows(rowEnd, input, fb, bandStats);
+      });
+}
+
+void IntervalAlgorithm::Band::drawRows(int rowEnd, const FrameInput& input, FrameBuffer& fb,
+                                       RenderStats& stats) {
+  const int width = fb.width();
   inPosition_.assign(tables_.polygons.size(), -1);
   inside_.clear();
   activeEdges_.clear();
@@ -34,8 +51,9 @@ void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
   counters_ = Counters();
 
   size_t activePolygons = 0, maxActiveEdges = 0, maxActivePolygons = 0;
-  for (int y = 0; y < height; ++y) {
-    activePolygons += tables_.polygonBucket[y + 1] - tables_.polygonBucket[y];
+  for (int y = tables_.rowBegin; y < rowEnd; ++y) {
+    const int r = y - tables_.rowBegin;
+    activePolygons += tables_.polygonBucket[r + 1] - tables_.polygonBucket[r];
     maxActivePolygons = std::max(maxActivePolygons, activePolygons);
     // The table is still sorted from the last row but for edges that crossed while stepping:
     // a few adjacent swaps (insertion sort).
@@ -48,7 +66,7 @@ void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
       activeEdges_[j] = e;
     }
     // Edges whose first row is y join the table: sorted among themselves, then merged in.
-    const uint32_t firstNew = tables_.edgeBucket[y], endNew = tables_.edgeBucket[y + 1];
+    const uint32_t firstNew = tables_.edgeBucket[r], endNew = tables_.edgeBucket[r + 1];
     if (firstNew < endNew) {
       newEdges_.clear();
       for (uint32_t k = firstNew; k < endNew; ++k) {
@@ -103,7 +121,7 @@ void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
       activeEdges_[m++] = e;
     }
     activeEdges_.resize(m);
-    activePolygons -= tables_.polygonsEnding[size_t(y)];
+    activePolygons -= tables_.polygonsEnding[size_t(r)];
     input.rowFinished(y);
   }
 
@@ -119,7 +137,7 @@ void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
   stats.extra.emplace_back("max_active_polygons", maxActivePolygons);
 }
 
-void IntervalAlgorithm::fillSpan(int left, int right, int y, DepthKey* row) {
+void IntervalAlgorithm::Band::fillSpan(int left, int right, int y, DepthKey* row) {
   const size_t n = inside_.size();
   if (n == 0) {
     std::fill(row + left, row + right, kClearKey);
@@ -149,7 +167,7 @@ void IntervalAlgorithm::fillSpan(int left, int right, int y, DepthKey* row) {
   resolveSpan(left, right - 1, row);
 }
 
-void IntervalAlgorithm::resolveSpan(int left, int right, DepthKey* row) {
+void IntervalAlgorithm::Band::resolveSpan(int left, int right, DepthKey* row) {
   const size_t n = candidates_.size();
   int x = left, chunk = 1, pieces = 0;
   while (x <= right) {
@@ -205,7 +223,7 @@ void IntervalAlgorithm::resolveSpan(int left, int right, DepthKey* row) {
 //  5. Where h > 2 (E_W + E_C): f_C - f_W >= g - (E_W + E_C) > 0, hence (by 3.) z_C > z_W and
 //     C's key is larger whatever the ids. Ties and ulp-sized swaps fail this test and are left
 //     to the exact keys.
-int IntervalAlgorithm::provenExtent(size_t w, int x, int right) const {
+int IntervalAlgorithm::Band::provenExtent(size_t w, int x, int right) const {
   const Candidate& win = candidates_[w];
   const float winLo = win.plane->minDepth(), winHi = win.plane->maxDepth();
   if (!(win.zLeft > winLo && win.zLeft < winHi && win.zRight > winLo && win.zRight < winHi))

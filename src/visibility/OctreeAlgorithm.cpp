@@ -1,8 +1,12 @@
 #include "zrender/visibility/OctreeAlgorithm.hpp"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "zrender/raster/RowBands.hpp"
 
 namespace zrender {
 
@@ -37,42 +41,111 @@ FaceBatches OctreeAlgorithm::prepare(const Scene& scene) {
 }
 
 void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
-  rasterizer_.begin(fb);
-  const std::vector<OctreeNode>& nodes = octree_.nodes();
   FrameGeometry& g = input.geometry;
-  const Camera& camera = input.camera;
-  const OctreeNodeTest test(camera, fb.width(), fb.height());
-  const Vec3& eye = camera.eye;
+  if (!input.parallel()) {
+    whole_.rasterizer.begin(fb);
+    traverse(input, OctreeNodeTest(input.camera, fb.width(), fb.height()), whole_, stats,
+             [&](uint32_t leaf) {
+               const size_t firstTriangle = g.triangles.size();
+               input.source.pullBatch(leafBatch_[leaf], g);
+               drawLeaf(whole_.rasterizer, g.triangles.data() + firstTriangle,
+                        g.triangles.size() - firstTriangle, stats);
+               // Drawn: the next leaf's triangles reuse the same, cached, storage instead of
+               // appending to megabytes of them.
+               g.triangles.resize(firstTriangle);
+             });
+    whole_.rasterizer.finish();
+    return;
+  }
+  const Threads& threads = *input.threads;
+  // The bands share out the rows the model covers, where the work is.
+  int busyBegin = 0, busyEnd = fb.height() - 1;
+  if (!octree_.nodes().empty())
+    OctreeNodeTest(input.camera, fb.width(), fb.height())
+        .screenRows(octree_.nodes()[0], busyBegin, busyEnd);
+  const RowBands rows(fb.height(), threads.count() * kBandsPerThread, DepthPyramid::kTileSize,
+                      busyBegin, busyEnd + 1);
+  const size_t batches = batches_.size() - 1;
+  if (!leafState_ || leafTriangles_.size() != batches) {
+    leafState_ = std::make_unique<std::atomic<uint8_t>[]>(batches);
+    leafTriangles_.resize(batches);
+  }
+  for (size_t b = 0; b < batches; ++b) leafState_[b].store(0, std::memory_order_relaxed);
+  bands_.resize(size_t(rows.count()));
+  threads.forEach(size_t(rows.count()), [&](size_t b) {
+    Band& band = bands_[b];
+    const int rowBegin = rows.rowBegin(int(b)), rowEnd = rows.rowEnd(int(b));
+    band.rasterizer.begin(fb, rowBegin, rowEnd);
+    band.stats = RenderStats();
+    traverse(input, OctreeNodeTest(input.camera, fb.width(), fb.height(), rowBegin, rowEnd), band,
+             band.stats, [&](uint32_t leaf) {
+               const GeometryVector<ScreenTriangle>& t =
+                   leafTriangles(leafBatch_[leaf], input.source, band.geometry);
+               drawLeaf(band.rasterizer, t.data(), t.size(), band.stats);
+             });
+    band.rasterizer.finish();
+    input.rowsReady(rowBegin, rowEnd);
+  });
+  for (const Band& band : bands_) {
+    stats += band.stats;
+    g.counters.backfaceCulled += band.geometry.counters.backfaceCulled;
+    g.counters.clippedAway += band.geometry.counters.clippedAway;
+    g.counters.degenerate += band.geometry.counters.degenerate;
+  }
+}
 
-  stack_.clear();
-  if (!nodes.empty()) stack_.push_back(0);
-  while (!stack_.empty()) {
-    const uint32_t nodeIndex = stack_.back();
+const GeometryVector<ScreenTriangle>& OctreeAlgorithm::leafTriangles(uint32_t batch,
+                                                                     GeometrySource& source,
+                                                                     FrameGeometry& scratch) {
+  std::atomic<uint8_t>& state = leafState_[batch];
+  uint8_t expected = 0;
+  if (state.load(std::memory_order_acquire) != 2 &&
+      state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel)) {
+    scratch.triangles.clear();
+    scratch.faces.clear();
+    scratch.vertices.clear();
+    source.pullBatch(batch, scratch);
+    leafTriangles_[batch].assign(scratch.triangles.begin(), scratch.triangles.end());
+    state.store(2, std::memory_order_release);
+  }
+  // Another band transforms it: a leaf takes microseconds.
+  while (state.load(std::memory_order_acquire) != 2) _mm_pause();
+  return leafTriangles_[batch];
+}
+
+void OctreeAlgorithm::drawLeaf(HzbRasterizer& rasterizer, const ScreenTriangle* triangles,
+                               size_t count, RenderStats& stats) {
+  // The leaf's screen region was usually not drawn recently: fetch the buffer rows of a
+  // triangle a few places ahead while drawing.
+  for (size_t t = 0; t < std::min(count, kAhead); ++t) rasterizer.prefetch(triangles[t]);
+  for (size_t t = 0; t < count; ++t) {
+    if (t + kAhead < count) rasterizer.prefetch(triangles[t + kAhead]);
+    rasterizer.drawTriangle(triangles[t], stats);
+  }
+}
+
+template <typename DrawLeaf>
+void OctreeAlgorithm::traverse(const FrameInput& input, const OctreeNodeTest& test, Band& band,
+                               RenderStats& stats, const DrawLeaf& drawLeaf) const {
+  std::vector<uint32_t>& stack = band.stack;
+  const std::vector<OctreeNode>& nodes = octree_.nodes();
+  const Vec3& eye = input.camera.eye;
+  stack.clear();
+  if (!nodes.empty()) stack.push_back(0);
+  while (!stack.empty()) {
+    const uint32_t nodeIndex = stack.back();
     const OctreeNode& node = nodes[nodeIndex];
-    stack_.pop_back();
+    stack.pop_back();
     ++stats.octreeNodesVisited;
-    if (test.hidden(node, rasterizer_.pyramid())) {
+    if (test.hidden(node, band.rasterizer.pyramid())) {
       ++stats.octreeNodesCulled;
       continue;
     }
     if (node.childMask == 0) {
-      const size_t firstTriangle = g.triangles.size();
-      input.source.pullBatch(leafBatch_[nodeIndex], g);
       // The next node is likely the next leaf: fetch its faces while this one draws.
-      if (!stack_.empty() && nodes[stack_.back()].childMask == 0)
-        input.source.prefetchBatch(leafBatch_[stack_.back()]);
-      // The leaf's screen region was usually not drawn recently: fetch the buffer rows of a
-      // triangle a few places ahead while drawing.
-      const size_t end = g.triangles.size();
-      for (size_t t = firstTriangle; t < std::min(end, firstTriangle + kAhead); ++t)
-        rasterizer_.prefetch(g.triangles[t]);
-      for (size_t t = firstTriangle; t < end; ++t) {
-        if (t + kAhead < end) rasterizer_.prefetch(g.triangles[t + kAhead]);
-        rasterizer_.drawTriangle(g.triangles[t], stats);
-      }
-      // Drawn: the next leaf's triangles reuse the same, cached, storage instead of
-      // appending to megabytes of them.
-      g.triangles.resize(firstTriangle);
+      if (!stack.empty() && nodes[stack.back()].childMask == 0)
+        input.source.prefetchBatch(leafBatch_[stack.back()]);
+      drawLeaf(nodeIndex);
       continue;
     }
     // Front to back: the octant on the eye's side of all three split planes first, then
@@ -84,10 +157,9 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
       const unsigned o = near ^ unsigned(i);
       if (!(node.childMask & (1u << o))) continue;
       const unsigned before = __builtin_popcount(node.childMask & ((1u << o) - 1u));
-      stack_.push_back(node.firstChild + before);
+      stack.push_back(node.firstChild + before);
     }
   }
-  rasterizer_.finish();
 }
 
 }  // namespace zrender

@@ -15,8 +15,28 @@ constexpr int kNodeQueryNodes = 64;
 
 }  // namespace
 
-OctreeNodeTest::OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples)
-    : vp_(camera.projection * camera.view), width_(widthSamples), height_(heightSamples) {}
+OctreeNodeTest::OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples,
+                               int rowBegin, int rowEnd)
+    : vp_(camera.projection * camera.view),
+      width_(widthSamples),
+      height_(heightSamples),
+      rowBegin_(rowBegin),
+      rowEnd_(rowEnd < 0 ? heightSamples : rowEnd) {}
+
+bool OctreeNodeTest::screenRows(const OctreeNode& node, int& minY, int& maxY) const {
+  double y0 = HUGE_VAL, y1 = -HUGE_VAL;
+  for (int c = 0; c < 8; ++c) {
+    const Vec4 p = vp_ * Vec4(c & 1 ? node.hi[0] : node.lo[0], c & 2 ? node.hi[1] : node.lo[1],
+                              c & 4 ? node.hi[2] : node.lo[2], 1.0);
+    if (!(p[3] > 0.0 && p[2] > -p[3])) return false;
+    const double y = (1.0 - p[1] / p[3]) * 0.5 * height_;  // samples, down
+    y0 = std::min(y0, y), y1 = std::max(y1, y);
+  }
+  if (!(y0 <= y1)) return false;
+  minY = int(std::clamp(std::floor(y0 - 1.5), 0.0, height_));
+  maxY = int(std::clamp(std::ceil(y1 + 0.5), 0.0, height_ - 1.0));
+  return true;
+}
 
 bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid) const {
   // Clip-space corners: base + any subset of the three edge vectors.
@@ -59,9 +79,9 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
   // Samples whose centre (i + 0.5) may be covered, with a sample of slack for snapping.
   const double minX = std::max(std::floor(x0 - 1.5), 0.0);
   const double maxX = std::min(std::ceil(x1 + 0.5), width_ - 1.0);
-  const double minY = std::max(std::floor(y0 - 1.5), 0.0);
-  const double maxY = std::min(std::ceil(y1 + 0.5), height_ - 1.0);
-  if (minX > maxX || minY > maxY) return true;  // off screen
+  const double minY = std::max(std::floor(y0 - 1.5), rowBegin_);
+  const double maxY = std::min(std::ceil(y1 + 0.5), rowEnd_ - 1.0);
+  if (minX > maxX || minY > maxY) return true;  // off screen (or off the band)
   // No sample of a face is nearer than the face's nearest corner (DepthPlane clamps to its
   // corner depths), and the corners lie in the box: below the box's nearest corner by the
   // rounding of the two matrix products only.

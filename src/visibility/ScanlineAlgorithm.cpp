@@ -16,21 +16,13 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
     drawRows(whole_, height, input, fb, stats);
     return;
   }
-  const Threads& threads = *input.threads;
-  const RowBands bands(height, threads.count() * kBandsPerThread);
-  faceLists_.build(g.faces.size(), bands, threads, [&](size_t f, int& first, int& last) {
-    return faceRows(g, uint32_t(f), height, first, last);
-  });
-  perThread_.resize(size_t(threads.count()));
-  bandStats_.assign(size_t(bands.count()), RenderStats());
-  threads.forEach(size_t(bands.count()), [&](size_t b) {
-    Band& band = perThread_[size_t(threads.slot())];
-    band.tables.build(g, width, height, bands.rowBegin(int(b)), bands.rowEnd(int(b)),
-                      faceLists_.items(int(b)), faceLists_.size(int(b)));
-    bandStats_[b].trianglesRasterized += band.tables.triangleCount;
-    drawRows(band, bands.rowEnd(int(b)), input, fb, bandStats_[b]);
-  });
-  for (const RenderStats& s : bandStats_) stats += s;
+  perThread_.resize(size_t(input.threads->count()));
+  bands_.draw(
+      input, width, height, stats,
+      [&](int thread) -> PolygonTables& { return perThread_[size_t(thread)].tables; },
+      [&](int thread, int rowEnd, RenderStats& bandStats) {
+        drawRows(perThread_[size_t(thread)], rowEnd, input, fb, bandStats);
+      });
 }
 
 void ScanlineAlgorithm::drawRows(Band& band, int rowEnd, const FrameInput& input, FrameBuffer& fb,

@@ -46,7 +46,8 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
 void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const Threads& threads = *input.threads;
   const int width = fb.width(), height = fb.height();
-  const GeometryVector<ScreenTriangle>& triangles = bands_.bin(input.geometry, width, height, threads);
+  const GeometryVector<ScreenTriangle>& triangles =
+      bands_.bin(input.geometry, width, height, threads);
   // Each band is cleared and drawn by one thread, its triangles clipped to its rows; a
   // triangle is counted by the first band it reaches, as one thread counts it once.
   bandStats_.assign(size_t(bands_.bandCount()), RenderStats());

@@ -132,7 +132,9 @@ INSTANTIATE_TEST_SUITE_P(
                  {"-o", "c.png", "--ids", "m.obj/i.png"},
                  {"m.obj/i.png: cannot create folder: "}},
         BadInput{"BadOption", kSquareObj, "", {"--frobnicate"}, {"command line", "frobnicate"}},
-        BadInput{"MsaaThree", kSquareObj, "", {"--msaa", "3"}, {"msaa"}}),
+        BadInput{"MsaaThree", kSquareObj, "", {"--msaa", "3"}, {"msaa"}},
+        BadInput{"NoThreads", kSquareObj, "", {"--threads", "0"}, {"--threads", "0"}},
+        BadInput{"ThreadsNotANumber", kSquareObj, "", {"--threads", "two"}, {"--threads"}}),
     [](const ::testing::TestParamInfo<BadInput>& p) { return std::string(p.param.name); });
 
 TEST(CommandLineErrors, SizeOutOfRangeInTheFileNamesTheKey) {

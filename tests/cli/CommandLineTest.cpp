@@ -184,7 +184,9 @@ TEST(CommandLine, StatsInWords) {
   dir.write("settings.json", settingsFor("two.obj", "", "64"));
   // The z-buffer draws in face order: 1024 samples of the front square, then the 484 of the
   // back one, all tested and none written; 1024 / 1508 = 67.9045% of the tests win.
-  const auto z = runZrender({"sq", "--stats", "-o", dir.file("z.png")}, dir.path);
+  // One thread: with more, the culling counters count per band of rows (docs/design.md,
+  // Threads).
+  const auto z = runZrender({"sq", "--stats", "--threads", "1", "-o", dir.file("z.png")}, dir.path);
   ASSERT_EQ(z.status, 0) << z.err;
   const std::string counters =
       "triangles: 4 rasterized, 0 back-facing, 0 clipped away, 0 degenerate, 0 rejected "
@@ -199,16 +201,17 @@ TEST(CommandLine, StatsInWords) {
   EXPECT_TRUE(std::regex_match(z.out.substr(counters.size()), times)) << z.out;
   // The pyramid's tiles under the back square are all covered by the front one, so both of
   // its triangles are rejected before any sample test. With --json the words go to stderr.
-  const auto h = runZrender(
-      {"sq", "--stats", "--json", "--alg", "hierarchical", "-o", dir.file("h.png")}, dir.path);
+  const auto h = runZrender({"sq", "--stats", "--json", "--threads", "1", "--alg", "hierarchical",
+                             "-o", dir.file("h.png")},
+                            dir.path);
   ASSERT_EQ(h.status, 0) << h.err;
   EXPECT_NE(h.err.find(" 2 rejected by the z-pyramid\n"), std::string::npos) << h.err;
   EXPECT_NE(h.err.find("samples: 1024 depth tests, 1024 written (100% won)\n"), std::string::npos)
       << h.err;
   EXPECT_EQ(std::count(h.out.begin(), h.out.end(), '\n'), 1);  // the JSON line alone
   // The interval scan-line adds its own counters, one per line.
-  const auto i =
-      runZrender({"sq", "--stats", "--alg", "interval", "-o", dir.file("i.png")}, dir.path);
+  const auto i = runZrender(
+      {"sq", "--stats", "--threads", "1", "--alg", "interval", "-o", dir.file("i.png")}, dir.path);
   ASSERT_EQ(i.status, 0) << i.err;
   EXPECT_NE(i.out.find("\nspans: "), std::string::npos) << i.out;
 }

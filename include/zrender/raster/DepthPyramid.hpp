@@ -50,12 +50,18 @@ class DepthPyramid {
   static constexpr int kTileSize = 1 << kTileShift;  // samples per tile side
 
   // Starts a frame on `fb` (already sized): every sample is logically kClearKey.
-  void begin(FrameBuffer& fb);
+  void begin(FrameBuffer& fb) { begin(fb, 0, fb.height()); }
+  // The same over sample rows [rowBegin, rowEnd) of `fb` alone (rowBegin a multiple of
+  // kTileSize): the pyramid of a band of the image, which one thread draws. Rows below are in
+  // image coordinates all the same.
+  void begin(FrameBuffer& fb, int rowBegin, int rowEnd);
 
   // Clears the sample rows [minY, maxY] (inside the image) before a triangle writes there, if
   // not done yet this frame: whole rows of tiles at a time, so that the stores stream through
   // memory and the rows are in cache for the triangles that follow.
   void prepareRows(int minY, int maxY) {
+    minY -= rowOffset_;
+    maxY -= rowOffset_;
     for (int ty = minY >> kTileShift; ty <= maxY >> kTileShift; ++ty)
       if (!rowCleared_[size_t(ty)]) clearTileRow(ty);
   }
@@ -63,8 +69,8 @@ class DepthPyramid {
   // Brings the pyramid up to date after a triangle wrote into the sample rectangle.
   void update(int minX, int minY, int maxX, int maxY) {
     const int tx0 = minX >> kTileShift, tx1 = maxX >> kTileShift;
-    const int ty0 = minY >> kTileShift, ty1 = maxY >> kTileShift;
-    const DepthKey* keys = fb_->data();
+    const int ty0 = (minY - rowOffset_) >> kTileShift, ty1 = (maxY - rowOffset_) >> kTileShift;
+    const DepthKey* keys = keys_;
     for (int ty = ty0; ty <= ty1; ++ty) {
       const size_t rowTile = size_t(ty) * tilesX_;
       for (int tx = tx0; tx <= tx1; ++tx) {
@@ -81,7 +87,7 @@ class DepthPyramid {
   // while they have at most `maxNodes` nodes over it.
   bool occludes(int minX, int minY, int maxX, int maxY, DepthKey key, int maxNodes = 16) const {
     const int x0 = minX >> kTileShift, x1 = maxX >> kTileShift;
-    const int y0 = minY >> kTileShift, y1 = maxY >> kTileShift;
+    const int y0 = (minY - rowOffset_) >> kTileShift, y1 = (maxY - rowOffset_) >> kTileShift;
     if (x1 - x0 <= 1 && y1 - y0 <= 1) {
       // Small rectangles (most triangles): the at most 2 x 2 tiles themselves.
       const DepthKey* tiles = levels_[0].data();
@@ -92,17 +98,21 @@ class DepthPyramid {
     return occludesSlow(x0, y0, x1, y1, key, maxNodes);
   }
 
-  // For the tiles of the sample rectangle [minX, maxX] x [minY, maxY] (inside the image):
-  // sets hidden[t] (one byte per tile, row by row, sized for all tiles) to whether `key` is
-  // greater than every key of tile t, valid until the pyramid changes; or, with key 0, to 0.
+  // For the tiles of the sample rectangle [minX, maxX] x [minY, maxY] (inside the pyramid's
+  // rows): sets hidden[t] (one byte per tile of the image, row by row; grown to this
+  // pyramid's last tile if smaller) to whether `key` is greater than every key of tile t,
+  // valid until the pyramid changes; or, with key 0, to 0.
   void tilesBehind(DepthKey key, int minX, int minY, int maxX, int maxY,
                    std::vector<uint8_t>& hidden) const {
     const std::vector<DepthKey>& tiles = levels_[0];
-    hidden.resize(tiles.size());
-    for (int ty = minY >> kTileShift; ty <= maxY >> kTileShift; ++ty) {
+    const size_t firstTile = size_t(rowOffset_ >> kTileShift) * size_t(tilesX_);
+    if (hidden.size() < firstTile + tiles.size()) hidden.resize(firstTile + tiles.size());
+    uint8_t* out = hidden.data() + firstTile;
+    for (int ty = (minY - rowOffset_) >> kTileShift; ty <= (maxY - rowOffset_) >> kTileShift;
+         ++ty) {
       const size_t row = size_t(ty) * size_t(tilesX_);
       for (int tx = minX >> kTileShift; tx <= maxX >> kTileShift; ++tx)
-        hidden[row + size_t(tx)] = key > tiles[row + size_t(tx)];
+        out[row + size_t(tx)] = key > tiles[row + size_t(tx)];
     }
   }
   int tilesX() const { return tilesX_; }
@@ -127,12 +137,15 @@ class DepthPyramid {
     return m;
   }
 
-  FrameBuffer* fb_ = nullptr;
+  DepthKey* rowPointer(int y) const { return keys_ + size_t(y) * size_t(width_); }
+
+  DepthKey* keys_ = nullptr;    // the first sample of the pyramid's first row
+  int rowOffset_ = 0;           // that row in the image
   int width_ = 0, height_ = 0;  // samples
   int tilesX_ = 0, tilesY_ = 0;
   std::vector<std::vector<DepthKey>> levels_;  // levels_[0]: tiles; last: the root
   std::vector<int> levelWidth_, levelHeight_;
-  std::vector<uint32_t> tileArgMax_;  // cleared tiles: sample index holding the maximum
+  std::vector<uint32_t> tileArgMax_;  // cleared tiles: sample index (from keys_) of the maximum
   std::vector<uint8_t> rowCleared_;   // per row of tiles: cleared this frame
   bool avx2_ = false;                 // tileMaxAvx2 for whole tiles
 };

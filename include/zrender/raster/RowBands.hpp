@@ -11,26 +11,40 @@ namespace zrender {
 // Bands per thread for the algorithms that draw bands of rows from tables of their own (the
 // scan-line ones): enough for the threads to balance uneven bands, few enough that the faces
 // crossing band edges, classified in each band they reach, stay a small share.
-constexpr int kBandsPerThread = 4;
+constexpr int kBandsPerThread = 8;
 
 // An image's sample rows cut into bands of about equal height, for algorithms that draw the
 // bands apart (one thread each) and need every item that reaches a band in that band's list.
 class RowBands {
  public:
-  // `height` rows in `count` bands (at least one), each a multiple of `align` rows but the last.
-  RowBands(int height, int count, int align = 1) : height_(std::max(height, 0)) {
+  // `height` rows in about `count` bands (at least one) of equal height, a multiple of `align`
+  // rows, over the rows [busyBegin, busyEnd) where the work is (default: all): the rows
+  // before and after them go to the first and the last band.
+  RowBands(int height, int count, int align = 1, int busyBegin = 0, int busyEnd = -1)
+      : height_(std::max(height, 0)) {
     count = std::max(count, 1);
-    rowsPerBand_ = std::max(align, (height_ + count - 1) / count);
+    busyEnd = busyEnd < 0 ? height_ : std::min(busyEnd, height_);
+    busyBegin = std::clamp(busyBegin, 0, busyEnd);
+    rowsPerBand_ = std::max(align, (busyEnd - busyBegin + count - 1) / count);
     rowsPerBand_ = (rowsPerBand_ + align - 1) / align * align;
-    count_ = std::max(1, (height_ + rowsPerBand_ - 1) / rowsPerBand_);
+    // The first band's end: the first multiple of the band height past busyBegin, from 0
+    // (so that band edges stay aligned).
+    first_ = std::min(height_, (busyBegin / rowsPerBand_ + 1) * rowsPerBand_);
+    count_ = 1 + std::max(0, (height_ - first_ + rowsPerBand_ - 1) / rowsPerBand_);
+    count_ =
+        std::min(count_, 1 + std::max(0, (busyEnd - first_ + rowsPerBand_ - 1) / rowsPerBand_));
   }
   int count() const { return count_; }
-  int rowBegin(int band) const { return band * rowsPerBand_; }
-  int rowEnd(int band) const { return std::min(height_, (band + 1) * rowsPerBand_); }
-  int bandOf(int row) const { return row / rowsPerBand_; }
+  int rowBegin(int band) const { return band == 0 ? 0 : first_ + (band - 1) * rowsPerBand_; }
+  int rowEnd(int band) const {
+    return band + 1 == count_ ? height_ : std::min(height_, first_ + band * rowsPerBand_);
+  }
+  int bandOf(int row) const {
+    return row < first_ ? 0 : std::min(count_ - 1, 1 + (row - first_) / rowsPerBand_);
+  }
 
  private:
-  int height_, rowsPerBand_, count_;
+  int height_, rowsPerBand_, first_, count_;
 };
 
 // Items 0..n-1 (triangles, faces) placed in every band of rows they reach, in increasing order

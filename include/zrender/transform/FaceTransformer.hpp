@@ -40,7 +40,9 @@ class FaceTransformer : public GeometrySource {
                     TriangleFilter* filter = nullptr) override;
   void pullBatch(uint32_t batch, FrameGeometry& out) override;
   void prefetchBatch(uint32_t batch) const override;
-  double transformMs() const override { return transformMs_; }
+  // With several threads, the time of the batches they pulled at once counts divided by their
+  // number (docs/design.md, Timings and JSON).
+  double transformMs() const override;
 
   // What the box of an instance's positions tells about its vertices in this frame.
   InstanceView viewOfInstance(uint32_t instance) const;
@@ -50,10 +52,12 @@ class FaceTransformer : public GeometrySource {
 
  private:
   void projectInstance(uint32_t instance);
-  void projectBatch(uint32_t batch);
-  // pullAll() on several threads: the faces in chunks, each into geometry of its own, then
-  // joined in face id order.
-  void pullAllParallel(FrameGeometry& out);
+  void projectBatch(uint32_t batch, std::vector<VertexState>& state,
+                    std::vector<Vec3>& window) const;
+  // pullAll() (`instance` -1) or pullInstance() on several threads: the faces in chunks, each
+  // into geometry of its own, then joined in face id order. `filter` is asked from every
+  // thread at once.
+  void pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter);
   // A chunk's part of pullAllParallel: faces [faceBegin, faceEnd) of `instance`, whose
   // vertices `vertices` holds, by `assembler`.
   void assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,
@@ -74,12 +78,14 @@ class FaceTransformer : public GeometrySource {
   std::vector<VertexState> instanceState_, batchState_;  // the vertices of the last pull
   std::vector<Vec3> instanceWindow_, batchWindow_;
 
-  // pullAllParallel's: the threads, each one's assembler and vertices, each chunk's geometry.
+  // With several threads: the threads, each one's assembler, vertices and batch time, and each
+  // chunk's geometry (pullParallel).
   const Threads* threads_ = nullptr;
   struct Worker {
     FaceAssembler assembler;
     std::vector<VertexState> state;
     std::vector<Vec3> window;
+    double batchMs = 0.0;
   };
   std::vector<Worker> workers_;
   std::vector<FrameGeometry> chunks_;

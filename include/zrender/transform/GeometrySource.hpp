@@ -32,7 +32,8 @@ class TriangleFilter {
   }
   // Then, for a triangle face still kept: `v`, its snapped corners (samples, either winding),
   // and `nearestDepth`, the least window depth of its corners exactly as the face's
-  // DepthPlane::minDepth() will be. True drops the face.
+  // DepthPlane::minDepth() will be. True drops the face. A transform on several threads asks
+  // from all of them at once.
   virtual bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) = 0;
 };
 
@@ -66,6 +67,8 @@ class GeometrySource {
   virtual void pullInstance(uint32_t instance, FrameGeometry& out,
                             TriangleFilter* filter = nullptr) = 0;
   // The faces of batch `batch` of the FaceBatches the algorithm's prepare() returned, in order.
+  // A transform given several threads takes pulls of batches from all of them at once (each
+  // into its own `out`), and counts their time divided by the threads' number.
   virtual void pullBatch(uint32_t batch, FrameGeometry& out) = 0;
   // A hint: batch `batch` comes soon (its data can be fetched into cache meanwhile).
   virtual void prefetchBatch(uint32_t /*batch*/) const {}

@@ -17,7 +17,10 @@ namespace zrender {
 // a triangle face already proved hidden there costs no depth plane, no storage and no sorting; then
 // its triangles are drawn in bands of sample rows, top to bottom, in face id order within a band
 // (TriangleBands), each tested against the pyramid again. A model whose faces come front to back in
-// the file keeps most of its culling within one instance.
+// the file keeps most of its culling within one instance. With several threads, the image is cut
+// into bands of rows, each with a pyramid of its own: an instance is transformed by all the
+// threads, a face dropped when every band it reaches proves it hidden, then the bands draw its
+// triangles at once, before the next instance.
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }
@@ -25,8 +28,15 @@ class HierarchicalAlgorithm : public VisibilityAlgorithm {
   void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
 
  private:
+  // Sets instances_ to this frame's order.
+  void orderInstances(const FrameInput& input);
+  void renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats);
+
   HzbRasterizer rasterizer_;
   TriangleBands bands_;
+  std::vector<HzbRasterizer> bandRasterizers_;  // several threads: each band's
+  BandLists bandTriangles_;                     // an instance's triangles in each band
+  std::vector<RenderStats> bandStats_, threadStats_;
   Vec3 meshCentre_{0, 0, 0};         // model space: the centre of the mesh's bounding box
   std::vector<uint32_t> instances_;  // this frame's instance order, nearest first
 };

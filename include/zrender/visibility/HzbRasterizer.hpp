@@ -21,8 +21,10 @@ class HzbRasterizer {
   // Whether a triangle is proved hidden from its snapped corners `v` and the least depth of
   // its corners alone (the first test of drawTriangle); counts it in `stats` if so.
   bool rejects(const FixedPoint* v, float nearestDepth, uint32_t faceId, RenderStats& stats) const {
-    const SampleRect r = sampleBounds(v[0], v[1], v[2], fb_->width(), fb_->height());
-    if (r.empty()) return true;  // no sample centre in the image
+    SampleRect r = sampleBounds(v[0], v[1], v[2], fb_->width(), fb_->height());
+    r.minY = std::max(r.minY, rowBegin_);
+    r.maxY = std::min(r.maxY, rowEnd_ - 1);
+    if (r.empty()) return true;  // no sample centre in the image (or the band)
     if (!pyramid_.occludes(r.minX, r.minY, r.maxX, r.maxY, makeDepthKey(nearestDepth, faceId)))
       return false;
     ++stats.trianglesHzbCulled;
@@ -30,9 +32,14 @@ class HzbRasterizer {
   }
   // Starts a frame: the buffer is logically cleared (and physically cleared row by row as
   // triangles reach it).
-  void begin(FrameBuffer& fb) {
+  void begin(FrameBuffer& fb) { begin(fb, 0, fb.height()); }
+  // The same for the band of sample rows [rowBegin, rowEnd) alone (rowBegin a multiple of
+  // DepthPyramid::kTileSize), with a pyramid of its own: triangles are drawn clipped to it.
+  void begin(FrameBuffer& fb, int rowBegin, int rowEnd) {
     fb_ = &fb;
-    pyramid_.begin(fb);
+    rowBegin_ = rowBegin;
+    rowEnd_ = rowEnd;
+    pyramid_.begin(fb, rowBegin, rowEnd);
     coincident_.clear();
   }
   void drawTriangle(const ScreenTriangle& t, RenderStats& stats);
@@ -53,13 +60,14 @@ class HzbRasterizer {
     }
   }
   // Clears what no triangle reached in sample rows [0, rows), so that they can be read.
-  void finishRows(int rows) { pyramid_.prepareRows(0, std::min(rows, fb_->height()) - 1); }
+  void finishRows(int rows) { pyramid_.prepareRows(rowBegin_, std::min(rows, rowEnd_) - 1); }
   // Clears what no triangle reached; the buffer is then final.
   void finish() { pyramid_.finish(); }
   const DepthPyramid& pyramid() const { return pyramid_; }
 
  private:
   FrameBuffer* fb_ = nullptr;
+  int rowBegin_ = 0, rowEnd_ = 0;  // the rows drawn: the image's, or a band's
   DepthPyramid pyramid_;
   CoincidentTriangles coincident_;  // big triangles drawn this frame
   TriangleFillFunction fill_ = triangleFill();

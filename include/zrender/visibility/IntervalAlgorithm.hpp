@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "zrender/raster/PolygonEdges.hpp"
+#include "zrender/visibility/PolygonBands.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -14,7 +15,9 @@ namespace zrender {
 // is decided from the candidates' depths at the span's ends, and the span is split where their
 // depths cross; no per-sample depth buffer is used. Where the end values do not prove the order
 // of the rounded float keys (near ties, crossings), samples are decided one by one from the
-// exact keys, so the result is bit-identical to the z-buffer.
+// exact keys, so the result is bit-identical to the z-buffer. With several threads, the image is
+// cut into bands of rows, each drawn by one thread from tables of its own (PolygonTables for a
+// band).
 class IntervalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "interval"; }
@@ -47,21 +50,30 @@ class IntervalAlgorithm : public VisibilityAlgorithm {
     uint64_t samplesWritten = 0;   // samples covered by a polygon: decided, written once
   };
 
-  void fillSpan(int left, int right, int y, DepthKey* row);
-  void resolveSpan(int left, int right, DepthKey* row);
-  // Largest column e in [x, right] such that candidate w is proven nearer than every other
-  // candidate on [x, e] from the end values; x - 1 when nothing beyond the exact column x can
-  // be proven (then x is decided from its exact keys).
-  int provenExtent(size_t w, int x, int right) const;
+  // What drawing a band of rows needs (the whole image, with one thread).
+  struct Band {
+    // Draws rows [tables_.rowBegin, rowEnd) from tables_, which the caller has built.
+    void drawRows(int rowEnd, const FrameInput& input, FrameBuffer& fb, RenderStats& stats);
+    void fillSpan(int left, int right, int y, DepthKey* row);
+    void resolveSpan(int left, int right, DepthKey* row);
+    // Largest column e in [x, right] such that candidate w is proven nearer than every other
+    // candidate on [x, e] from the end values; x - 1 when nothing beyond the exact column x
+    // can be proven (then x is decided from its exact keys).
+    int provenExtent(size_t w, int x, int right) const;
 
-  PolygonTables tables_;
-  std::vector<ActiveEdge> activeEdges_;        // the active edge table, sorted by column per row
-  std::vector<ActiveEdge> newEdges_, merged_;  // edges joining on this row; merge scratch
-  std::vector<EdgeStepper> steppers_;          // per classified edge, valid while it is active
-  std::vector<int32_t> inPosition_;            // per polygon: index in inside_, or -1 when outside
-  std::vector<uint32_t> inside_;               // polygons covering the current span
-  std::vector<Candidate> candidates_;          // scratch for multi-candidate spans
-  Counters counters_;
+    PolygonTables tables_;
+    std::vector<ActiveEdge> activeEdges_;        // the active edge table, sorted by column
+    std::vector<ActiveEdge> newEdges_, merged_;  // edges joining on this row; merge scratch
+    std::vector<EdgeStepper> steppers_;          // per classified edge, valid while it is active
+    std::vector<int32_t> inPosition_;    // per polygon: index in inside_, or -1 when outside
+    std::vector<uint32_t> inside_;       // polygons covering the current span
+    std::vector<Candidate> candidates_;  // scratch for multi-candidate spans
+    Counters counters_;
+  };
+
+  Band whole_;                   // one thread
+  std::vector<Band> perThread_;  // several: each thread's
+  PolygonBands bands_;           // several: how they are drawn
 };
 
 }  // namespace zrender

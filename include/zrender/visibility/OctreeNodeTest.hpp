@@ -10,8 +10,10 @@ namespace zrender {
 // frame.
 class OctreeNodeTest {
  public:
-  // `widthSamples` x `heightSamples`: the buffer's size.
-  OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples);
+  // `widthSamples` x `heightSamples`: the buffer's size; a node is tested on sample rows
+  // [rowBegin, rowEnd) only (a band of the image, with a pyramid of its own; default: all).
+  OctreeNodeTest(const Camera& camera, int widthSamples, int heightSamples, int rowBegin = 0,
+                 int rowEnd = -1);
 
   // Whether every face below the node can be skipped: its box lies wholly outside one plane
   // of the view volume (the faces are clipped away), or wholly in front of the near plane and
@@ -20,10 +22,14 @@ class OctreeNodeTest {
   // its corner depths) and the corners lie in the box. A box that reaches the near plane is
   // never rejected for occlusion. NaN anywhere keeps the node.
   bool hidden(const OctreeNode& node, const DepthPyramid& pyramid) const;
+  // The sample rows [minY, maxY] of the image the node's box may cover, when it lies wholly in
+  // front of the near plane; false otherwise (then any row may hold its faces).
+  bool screenRows(const OctreeNode& node, int& minY, int& maxY) const;
 
  private:
-  Mat4 vp_;                // world to clip space
-  double width_, height_;  // samples
+  Mat4 vp_;                   // world to clip space
+  double width_, height_;     // samples
+  double rowBegin_, rowEnd_;  // the rows tested
 };
 
 }  // namespace zrender

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "zrender/raster/PolygonEdges.hpp"
-#include "zrender/raster/RowBands.hpp"
+#include "zrender/visibility/PolygonBands.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -44,8 +44,7 @@ class ScanlineAlgorithm : public VisibilityAlgorithm {
 
   Band whole_;                   // one thread
   std::vector<Band> perThread_;  // several: each thread's
-  BandLists faceLists_;          // several: the faces of each band
-  std::vector<RenderStats> bandStats_;
+  PolygonBands bands_;           // several: how they are drawn
 };
 
 }  // namespace zrender

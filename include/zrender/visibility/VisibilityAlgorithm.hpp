@@ -66,6 +66,10 @@ class VisibilityAlgorithm {
   virtual FaceBatches prepare(const Scene& /*scene*/) { return FaceBatches(); }
   // `fb` is sized to geometry's sample size but not cleared: clearing is part of the work.
   virtual void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) = 0;
+  // Whether input.geometry holds every face that may be in the buffer by the time rows are
+  // shaded (the shader prepares only those faces' colors), when rendering on several threads
+  // (`parallel`) or on one.
+  virtual bool gathersFaces(bool /*parallel*/) const { return true; }
 };
 
 // The names --alg accepts, in the order of docs/design.md, The algorithms (only those implemented).

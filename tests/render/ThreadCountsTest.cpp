@@ -1,0 +1,107 @@
+// Every thread count gives the buffers of one thread (docs/design.md, Threads): color, depth
+// and id of every algorithm with 2, 3 and 7 threads equal those with 1, on the reference
+// models, polygons, a grid, random soups, every shading mode and MSAA 4.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "support/TestSupport.hpp"
+#include "zrender/io/SceneFiles.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/scene/ShadingMode.hpp"
+#include "zrender/visibility/VisibilityAlgorithm.hpp"
+
+namespace zrender {
+namespace {
+
+test::Rendered renderWith(const Scene& scene, const std::string& algorithm, int threads) {
+  Renderer renderer(scene, algorithm, threads);
+  renderer.renderFrame(makeCamera(scene));
+  // A second frame too: what a renderer keeps from frame to frame must not change it.
+  renderer.renderFrame(makeCamera(scene));
+  return test::Rendered{renderer.buffer(), renderer.color().clone(), renderer.stats()};
+}
+
+// Every algorithm with `threadCounts` threads against itself with one.
+void expectSameForEveryThreadCount(const Scene& scene, const std::string& label,
+                                   std::initializer_list<int> threadCounts = {2, 3, 7}) {
+  for (const std::string& algorithm : algorithmNames()) {
+    const test::Rendered one = renderWith(scene, algorithm, 1);
+    for (int threads : threadCounts)
+      test::expectSameFrame(one, renderWith(scene, algorithm, threads),
+                            label + ", " + algorithm + ", " + std::to_string(threads) + " threads");
+  }
+}
+
+// The project's scene `name` at `size` pixels, or null when its model is not linked.
+std::unique_ptr<Scene> projectScene(const std::string& name, int size,
+                                    void (*adjust)(SceneSettings&) = nullptr) {
+  SceneSettings s = test::projectScene(name);
+  if (!std::filesystem::exists(s.modelPath)) return nullptr;
+  s.width = s.height = size;
+  if (adjust) adjust(s);
+  Warnings warnings;
+  return std::make_unique<Scene>(loadScene(s, warnings));
+}
+
+TEST(ThreadCounts, ReferenceModelsAndShapes) {
+  for (const std::string name : {"bunny", "spot", "teapot", "shapes"}) {
+    const auto scene = projectScene(name, 200);
+    if (!scene) GTEST_SKIP() << name << " is not linked under models/";
+    expectSameForEveryThreadCount(*scene, name);
+  }
+}
+
+TEST(ThreadCounts, TexturedWithMsaaAndBackFaces) {
+  const auto spot = projectScene("spot", 160, [](SceneSettings& s) {
+    s.shading = ShadingMode::Texture;
+    s.msaa = 4;
+  });
+  if (!spot) GTEST_SKIP() << "spot is not linked under models/";
+  expectSameForEveryThreadCount(*spot, "spot, texture, msaa 4", {3});
+  const auto teapot = projectScene("teapot", 160, [](SceneSettings& s) {
+    s.shading = ShadingMode::Phong;
+    s.cull = false;
+  });
+  expectSameForEveryThreadCount(*teapot, "teapot, phong, no cull", {2});
+}
+
+TEST(ThreadCounts, EveryShadingModeWithAndWithoutMsaa) {
+  for (const std::string& mode : shadingModeNames()) {
+    for (int msaa : {1, 4}) {
+      SceneSettings s = test::projectScene("bunny");
+      if (!std::filesystem::exists(s.modelPath)) GTEST_SKIP() << "bunny is not linked";
+      s.width = s.height = 120;
+      s.shading = *parseShadingMode(mode);
+      s.msaa = msaa;
+      Warnings warnings;
+      const Scene scene = loadScene(s, warnings);
+      for (const std::string algorithm : {"zbuffer", "interval", "octree"}) {
+        const test::Rendered one = renderWith(scene, algorithm, 1);
+        test::expectSameFrame(one, renderWith(scene, algorithm, 3),
+                              mode + ", msaa " + std::to_string(msaa) + ", " + algorithm);
+      }
+    }
+  }
+}
+
+TEST(ThreadCounts, SmallCrowd) {
+  const auto crowd = projectScene("crowd", 150);
+  if (!crowd) GTEST_SKIP() << "bunny is not linked under models/";
+  expectSameForEveryThreadCount(*crowd, "crowd", {2, 7});
+}
+
+TEST(ThreadCounts, RandomSoups) {
+  for (unsigned seed : {3u, 4u}) {
+    SceneSettings s = test::tinySettings(97);  // rows not a multiple of any band height
+    s.cull = seed == 4;
+    const Scene scene = makeScene(s, test::randomSoup(seed, 300, true));
+    expectSameForEveryThreadCount(scene, "soup " + std::to_string(seed));
+  }
+}
+
+}  // namespace
+}  // namespace zrender
