@@ -51,7 +51,8 @@ void addSceneOptions(CLI::App& app, SceneOverrides& o, VectorOptions& v,
       ->excludes(fit);
   app.add_option("--shading", o.shading, "normal flat phong random texture id depth");
   app.add_option("--msaa", o.msaa, "samples per pixel: 1 or 4");
-  app.add_flag("--no-cull", o.noCull, "draw back faces too");
+  CLI::Option* noCull = app.add_flag("--no-cull", o.noCull, "draw back faces too");
+  app.add_flag("--cull", o.cull, "cull back faces, whatever the scene says")->excludes(noCull);
 }
 
 void finishVectors(const VectorOptions& v, SceneOverrides& o) {

@@ -13,6 +13,7 @@
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "support/CommandLineRuns.hpp"
 #include "support/TestSupport.hpp"
@@ -251,6 +252,25 @@ TEST(CommandLine, MsaaDepthAndIdsHoldTheNearestSample) {
     EXPECT_EQ(id(3, y), -1) << y;
     EXPECT_EQ(depth.at<float>(y, 3), 1.0f) << y;
   }
+}
+
+TEST(CommandLine, CullTurnsCullingBackOnForASceneWithout) {
+  // The square seen from behind, in a scene that says "cull": false: drawn, unless --cull.
+  TempDir dir;
+  dir.write("sq.obj", kSquareObj);
+  dir.write("settings.json", settingsFor("sq.obj", ", \"cull\": false"));
+  const auto count = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"sq", "-o", dir.file("back.png"), "--eye", "0,0,-2"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = runZrender(args, dir.path);
+    EXPECT_EQ(r.status, 0) << r.err;
+    cv::Mat gray;
+    cv::cvtColor(cv::imread(dir.file("back.png")), gray, cv::COLOR_BGR2GRAY);
+    return cv::countNonZero(gray);
+  };
+  EXPECT_EQ(count({}), 256);
+  EXPECT_EQ(count({"--cull"}), 0);
+  expectCleanError(runZrender({"sq", "--cull", "--no-cull"}, dir.path), {"--cull", "--no-cull"});
 }
 
 TEST(CommandLine, UnknownSettingsKeyIsAWarning) {
