@@ -35,18 +35,23 @@ __attribute__((visibility("default"))) void* zrenderWindowOpen(const char* title
   return new std::string(title);
 }
 
+// No exception crosses the C interface: a window highgui cannot draw in any more is a closed
+// one, which the next waitKey reports.
 __attribute__((visibility("default"))) void zrenderWindowShow(void* window, const cv::Mat* image) {
-  cv::imshow(*static_cast<std::string*>(window), *image);
+  try {
+    cv::imshow(*static_cast<std::string*>(window), *image);
+  } catch (const cv::Exception&) {
+  }
 }
 
 __attribute__((visibility("default"))) int zrenderWindowWaitKey(void* window, int milliseconds) {
-  const int key = cv::waitKeyEx(milliseconds);
-  if (key != -1) return key;
   try {
+    const int key = cv::waitKeyEx(milliseconds);
+    if (key != -1) return key;
     if (cv::getWindowProperty(*static_cast<std::string*>(window), cv::WND_PROP_VISIBLE) < 1)
       return -2;
   } catch (const cv::Exception&) {
-    return -2;  // the window is gone
+    return -2;
   }
   return -1;
 }
