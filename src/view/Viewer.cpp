@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "zrender/base/Clock.hpp"
+#include "zrender/base/Error.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/view/FrameCommand.hpp"
 #include "zrender/view/Overlay.hpp"
@@ -66,7 +67,12 @@ void Viewer::save() {
     std::snprintf(number, sizeof number, "%03d", n);
     name = loaded_.settings.name + "-view-" + number + ".png";
   }
-  writeImageAtomically(name, renderer_->color());
+  try {
+    writeImageAtomically(name, renderer_->color());
+  } catch (const InputError& e) {  // a folder that cannot be written ends no session
+    out_ << "zrender view: cannot save: " << e.what() << std::endl;
+    return;
+  }
   out_ << "zrender view: saved " << name << ", the image of: " << lastFrameCommand() << std::endl;
 }
 
@@ -99,7 +105,7 @@ void Viewer::run(ViewWindow& window) {
     if (options_.frames > 0 && framesShown_ >= options_.frames) break;
 
     const int wait = std::max(1, int(kFrameMs - (nowMs() - frameStart)));
-    int code = window.waitKey(wait);
+    const int code = window.waitKey(wait);
     if (code == ViewWindow::kClosed) break;
     std::optional<ViewKey> key = viewKeyForCode(code);
     if (nextKey < options_.keys.size() && framesShown_ % options_.keyInterval == 0)
@@ -113,8 +119,10 @@ void Viewer::run(ViewWindow& window) {
     out_ << "zrender view: key '" << key->name << "': " << change.says << std::endl;
     if (change.effect == ViewEffect::Quit) break;
     if (change.effect == ViewEffect::Save) save();
-    if (change.effect == ViewEffect::Renderer || change.effect == ViewEffect::Scene)
+    if (change.effect == ViewEffect::Renderer || change.effect == ViewEffect::Scene) {
       rebuild(change.effect);
+      times_ = FrameTimes();  // the figures are of the frames of the settings on screen
+    }
   }
   if (options_.collectSheet) sheet_.push_back(shown);
   printFigures();

@@ -5,8 +5,9 @@
 
 namespace zrender {
 
-// The viewer's timing figures over its last kFrames frames: the median frame time (transform
-// + raster, FrameTimings::frameMs) and the frames shown per second.
+// The viewer's timing figures over its last kFrames frames (since the algorithm, shading, MSAA
+// or culling last changed): the median frame time (transform + raster, FrameTimings::frameMs)
+// and the frames shown per second.
 class FrameTimes {
  public:
   static constexpr size_t kFrames = 30;
