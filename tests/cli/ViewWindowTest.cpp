@@ -56,10 +56,14 @@ TEST(ViewWindow, ShowsTheModelWithTheOverlayAndAnswersKeys) {
   std::string shotPath = out.file("shot.xwd");
   if (found.status == 0 && !window.empty()) {
     // Pause the orbit, change the algorithm (the image stays the same: they all agree), and
-    // give the window time to show the frames of both.
+    // give the window time to show the frames of both. The pauses between keys are a person's:
+    // highgui keeps one key per wait for a key, so two keys within a frame would lose the first.
+    const auto pause = [](int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); };
+    pause(1000);
     xdotool({"key", "--window", window, "p"});
+    pause(500);
     xdotool({"key", "--window", window, "space"});
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    pause(1500);
     runProgram({"xwd", "-id", window, "-silent", "-out", shotPath}, "", {}, env);
     xdotool({"key", "--window", window, "q"});
   } else {
