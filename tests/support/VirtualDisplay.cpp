@@ -53,7 +53,8 @@ VirtualDisplay::~VirtualDisplay() {
 Environment VirtualDisplay::environment() const {
   const char* asan = std::getenv("ASAN_OPTIONS");
   return {{"DISPLAY", name_},
-          {"ASAN_OPTIONS", std::string(asan ? asan : "") + (asan ? ":" : "") + "detect_leaks=0"}};
+          {"ASAN_OPTIONS", std::string(asan ? asan : "") + (asan ? ":" : "") +
+                               "detect_leaks=0:strict_string_checks=0"}};
 }
 
 }  // namespace zrender::test

@@ -23,9 +23,10 @@ class VirtualDisplay {
   const std::string& name() const { return name_; }
   const std::string& error() const { return error_; }
 
-  // The environment of a program run on this display: DISPLAY, and leak checking off where
-  // the suite runs under AddressSanitizer (tools/sanitize.sh), because Qt, which draws the
-  // window, keeps caches it never frees until the process exits.
+  // The environment of a program run on this display: DISPLAY, and where the suite runs under
+  // AddressSanitizer (tools/sanitize.sh) two of its checks off for the libraries that draw the
+  // window, not zrender's code: leaks, since Qt keeps caches it frees only at exit, and strict
+  // string checks, since libxkbcommon-x11 strndup()s key names that are not NUL-terminated.
   Environment environment() const;
 
  private:
