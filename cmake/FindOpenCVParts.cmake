@@ -1,8 +1,8 @@
-# Finds the four OpenCV parts zrender uses (core, imgproc, imgcodecs, videoio) from Debian's
+# Finds the five OpenCV parts zrender uses (core, imgproc, imgcodecs, videoio, highgui) from Debian's
 # libopencv-*-dev packages, which ship no OpenCVConfig.cmake (only the libopencv-dev meta package
 # does, and it pulls in about a hundred packages).
 find_path(OpenCVParts_INCLUDE_DIR opencv2/core.hpp PATH_SUFFIXES opencv4)
-set(_zr_parts core imgproc imgcodecs videoio)
+set(_zr_parts core imgproc imgcodecs videoio highgui)
 set(OpenCVParts_LIBRARIES)
 foreach(_part IN LISTS _zr_parts)
   find_library(OpenCVParts_${_part}_LIBRARY NAMES opencv_${_part})
@@ -22,8 +22,13 @@ if(OpenCVParts_FOUND AND NOT TARGET OpenCV::Core)
   set_target_properties(OpenCV::Codecs PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
     INTERFACE_LINK_LIBRARIES "${OpenCVParts_imgcodecs_LIBRARY};${OpenCVParts_videoio_LIBRARY};OpenCV::Core")
-  # All four parts plus what src/ImageCodecs.cpp needs, for builds that compile src/*.cpp
-  # themselves (the fuzzers).
+  # OpenCV::Highgui: the window of `zrender view` (Qt on Debian), for its plugin only.
+  add_library(OpenCV::Highgui INTERFACE IMPORTED)
+  set_target_properties(OpenCV::Highgui PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"
+    INTERFACE_LINK_LIBRARIES "${OpenCVParts_highgui_LIBRARY};OpenCV::Core")
+  # Core, imgproc and the codecs plus what src/ImageCodecs.cpp needs, for builds that compile
+  # src/*.cpp themselves (the fuzzers).
   find_package(PNG REQUIRED)
   add_library(OpenCV::Parts INTERFACE IMPORTED)
   set_target_properties(OpenCV::Parts PROPERTIES

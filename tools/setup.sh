@@ -6,9 +6,13 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 
+# libopencv-highgui-dev and libx11-dev: the window of `zrender view`; xvfb, xdotool and x11-apps
+# (xwd): its tests, which run it on a virtual display, press keys and take screenshots.
 packages=(g++ cmake ninja-build pkg-config
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-videoio-dev
-  libpng-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev)
+  libopencv-highgui-dev libx11-dev
+  libpng-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev
+  xvfb xdotool x11-apps)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -10,6 +10,7 @@
 #include "zrender/base/Threads.hpp"
 #include "zrender/cli/BenchCommand.hpp"
 #include "zrender/cli/RenderCommand.hpp"
+#include "zrender/cli/ViewCommand.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -55,7 +56,8 @@ void addSceneOptions(CLI::App& app, SceneOverrides& o, VectorOptions& v,
       ->excludes(fit);
   app.add_option("--shading", o.shading, "normal flat phong random texture id depth");
   app.add_option("--msaa", o.msaa, "samples per pixel: 1 or 4");
-  app.add_flag("--no-cull", o.noCull, "draw back faces too");
+  CLI::Option* noCull = app.add_flag("--no-cull", o.noCull, "draw back faces too");
+  app.add_flag("--cull", o.cull, "cull back faces, whatever the scene says")->excludes(noCull);
 }
 
 void finishVectors(const VectorOptions& v, SceneOverrides& o) {
@@ -124,9 +126,40 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
     return runBench(options, out, err);
   }
 
+  if (argc > 1 && std::strcmp(argv[1], "view") == 0) {
+    CLI::App app{
+        "Show the scene in a window as it renders, the camera orbiting the target.\n\n"
+        "Keys:\n" +
+            viewKeysHelp(),
+        "zrender view"};
+    ViewOptions options;
+    std::string keys;
+    app.add_option("scene", options.scene, "a scene of settings.json, or a model file")->required();
+    app.add_option("-a,--alg", options.algorithm,
+                   "the first algorithm: zbuffer scanline interval hierarchical octree");
+    app.add_option("--keys", keys, "keys pressed one per frame (e.g. space,w,m,t,q)");
+    app.add_option("--key-interval", options.keyInterval, "frames between two --keys keys")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--frames", options.frames, "stop after N frames")
+        ->check(CLI::Range(1, 1000000000));
+    app.add_option("--save-last", options.saveLast, "write the last frame, without the overlay");
+    app.add_option("--contact-sheet", options.contactSheet,
+                   "tile the frames shown at key presses and the last into one PNG");
+    options.threads = hardwareThreads();
+    app.add_option("--threads", options.threads, "threads per frame (default: the machine's)")
+        ->check(CLI::Range(1, kMaxThreads));
+    addSceneOptions(app, options.overrides, vectors, options.settings);
+    if (!parseArguments(app, argc - 1, argv + 1, out)) return 0;
+    finishVectors(vectors, options.overrides);
+    checkAlgorithm(options.algorithm, "--alg");
+    if (app.count("--keys")) options.keys = parseViewKeys(keys, "--keys");
+    return runView(options, out, err);
+  }
+
   CLI::App app{
       "zrender: render a scene with one of five hidden-surface algorithms.\n"
-      "  zrender SCENE [options]\n  zrender bench [SCENE...] [options]",
+      "  zrender SCENE [options]\n  zrender bench [SCENE...] [options]\n"
+      "  zrender view SCENE [options]",
       "zrender"};
   RenderOptions options;
   app.set_version_flag("--version", "zrender " ZRENDER_VERSION);

@@ -50,6 +50,7 @@ void applyOverrides(const SceneOverrides& o, SceneSettings& s) {
   if (o.noFit) s.fit = false;
   if (o.msaa) s.msaa = *o.msaa;
   if (o.noCull) s.cull = false;
+  if (o.cull) s.cull = true;
   if (o.shading) {
     const auto mode = parseShadingMode(*o.shading);
     if (!mode) {

@@ -1,6 +1,5 @@
 #include "zrender/io/ImageCodecs.hpp"
 
-#include <dlfcn.h>
 #include <png.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "zrender/base/Plugin.hpp"
 #include "zrender/io/CodecPlugin.h"
 
 // Where the build put the plugin; the directory of the executable is searched first.
@@ -42,32 +42,18 @@ struct CodecPlugin {
 
 const CodecPlugin& codecPlugin() {
   static const CodecPlugin plugin = [] {
-    // Beside the executable first (build/zrender, build/libzrender_codecs.so), then the path
-    // the build recorded.
-    std::vector<std::string> candidates;
-    std::error_code ec;
-    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-      candidates.push_back((exe.parent_path() / "libzrender_codecs.so").string());
-      candidates.push_back((exe.parent_path().parent_path() / "libzrender_codecs.so").string());
-    }
-    candidates.push_back(ZRENDER_CODECS_PLUGIN);
-    void* handle = nullptr;
     std::string reason;
-    for (const std::string& c : candidates) {
-      if (!fs::exists(c, ec)) continue;
-      handle = dlopen(c.c_str(), RTLD_NOW | RTLD_LOCAL);
-      if (handle) break;
-      reason = dlerror();
-    }
+    void* handle = openPlugin("libzrender_codecs.so", ZRENDER_CODECS_PLUGIN, reason);
     if (!handle)
-      throw std::runtime_error("cannot load the image codec plugin libzrender_codecs.so " + reason);
+      throw std::runtime_error("cannot load the image codec plugin libzrender_codecs.so: " +
+                               reason);
+    const auto symbol = [handle](const char* name) { return pluginSymbol(handle, name); };
     CodecPlugin p;
-    p.imwrite = reinterpret_cast<ZrenderImwriteFn>(dlsym(handle, "zrenderImwrite"));
-    p.imread = reinterpret_cast<ZrenderImreadFn>(dlsym(handle, "zrenderImread"));
-    p.videoOpen = reinterpret_cast<ZrenderVideoOpenFn>(dlsym(handle, "zrenderVideoOpen"));
-    p.videoWrite = reinterpret_cast<ZrenderVideoWriteFn>(dlsym(handle, "zrenderVideoWrite"));
-    p.videoClose = reinterpret_cast<ZrenderVideoCloseFn>(dlsym(handle, "zrenderVideoClose"));
+    p.imwrite = reinterpret_cast<ZrenderImwriteFn>(symbol("zrenderImwrite"));
+    p.imread = reinterpret_cast<ZrenderImreadFn>(symbol("zrenderImread"));
+    p.videoOpen = reinterpret_cast<ZrenderVideoOpenFn>(symbol("zrenderVideoOpen"));
+    p.videoWrite = reinterpret_cast<ZrenderVideoWriteFn>(symbol("zrenderVideoWrite"));
+    p.videoClose = reinterpret_cast<ZrenderVideoCloseFn>(symbol("zrenderVideoClose"));
     if (!p.imwrite || !p.imread || !p.videoOpen || !p.videoWrite || !p.videoClose)
       throw std::runtime_error("the image codec plugin libzrender_codecs.so is incomplete");
     return p;

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
-#include <regex>
 #include <set>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "support/CommandLineRuns.hpp"
 #include "support/TestSupport.hpp"
@@ -23,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::expectCleanError;
 using test::kSquareObj;
+using test::matchesWithNumbers;
 using test::runZrender;
 using test::settingsFor;
 using test::TempDir;
@@ -195,10 +196,10 @@ TEST(CommandLine, StatsInWords) {
       "samples: 1508 depth tests, 1024 written (67.9045% won)\n";
   ASSERT_EQ(z.out.substr(0, counters.size()), counters);
   // Then the frame's times, which vary from run to run: only their form is fixed.
-  const std::regex times(
-      "time: [0-9.]+ ms transform, [0-9.]+ ms visibility, [0-9.]+ ms shading \\(raster "
-      "[0-9.]+ ms, frame [0-9.]+ ms\\)\n");
-  EXPECT_TRUE(std::regex_match(z.out.substr(counters.size()), times)) << z.out;
+  EXPECT_TRUE(matchesWithNumbers(
+      z.out.substr(counters.size()),
+      "time: # ms transform, # ms visibility, # ms shading (raster # ms, frame # ms)\n"))
+      << z.out;
   // The pyramid's tiles under the back square are all covered by the front one, so both of
   // its triangles are rejected before any sample test. With --json the words go to stderr.
   const auto h = runZrender({"sq", "--stats", "--json", "--threads", "1", "--alg", "hierarchical",
@@ -254,6 +255,25 @@ TEST(CommandLine, MsaaDepthAndIdsHoldTheNearestSample) {
     EXPECT_EQ(id(3, y), -1) << y;
     EXPECT_EQ(depth.at<float>(y, 3), 1.0f) << y;
   }
+}
+
+TEST(CommandLine, CullTurnsCullingBackOnForASceneWithout) {
+  // The square seen from behind, in a scene that says "cull": false: drawn, unless --cull.
+  TempDir dir;
+  dir.write("sq.obj", kSquareObj);
+  dir.write("settings.json", settingsFor("sq.obj", ", \"cull\": false"));
+  const auto count = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"sq", "-o", dir.file("back.png"), "--eye", "0,0,-2"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto r = runZrender(args, dir.path);
+    EXPECT_EQ(r.status, 0) << r.err;
+    cv::Mat gray;
+    cv::cvtColor(cv::imread(dir.file("back.png")), gray, cv::COLOR_BGR2GRAY);
+    return cv::countNonZero(gray);
+  };
+  EXPECT_EQ(count({}), 256);
+  EXPECT_EQ(count({"--cull"}), 0);
+  expectCleanError(runZrender({"sq", "--cull", "--no-cull"}, dir.path), {"--cull", "--no-cull"});
 }
 
 TEST(CommandLine, UnknownSettingsKeyIsAWarning) {

@@ -16,6 +16,22 @@ std::string settingsFor(const std::string& model, const std::string& extra,
          R"(, "eye": [0, 0, 2], "project": [90, 0, 0.1, 10])" + extra + "}}";
 }
 
+bool matchesWithNumbers(const std::string& text, const std::string& pattern) {
+  const auto isNumber = [](char c) { return (c >= '0' && c <= '9') || c == '.'; };
+  size_t t = 0;
+  for (const char p : pattern) {
+    if (p != '#') {
+      if (t >= text.size() || text[t] != p) return false;
+      ++t;
+      continue;
+    }
+    const size_t start = t;
+    while (t < text.size() && isNumber(text[t])) ++t;
+    if (t == start) return false;
+  }
+  return t == text.size();
+}
+
 void expectCleanError(const RunResult& r, const std::vector<std::string>& mustName) {
   EXPECT_EQ(r.status, 2) << r.err;
   ASSERT_FALSE(r.err.empty());

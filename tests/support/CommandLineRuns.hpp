@@ -19,6 +19,11 @@ extern const char* const kSquareObj;
 std::string settingsFor(const std::string& model, const std::string& extra = "",
                         const std::string& size = "32");
 
+// Whether `text` is `pattern` with each '#' standing for a number (one or more of 0-9 and '.'):
+// the form of a line whose times vary from run to run. (std::regex trips GCC 12's
+// maybe-uninitialized warning in the sanitizer build, where warnings are errors.)
+bool matchesWithNumbers(const std::string& text, const std::string& pattern);
+
 // Exit status 2 and one line on stderr, "zrender: error: ...", containing every piece of
 // `mustName`.
 void expectCleanError(const RunResult& r, const std::vector<std::string>& mustName);

@@ -94,8 +94,8 @@ std::string readFile(const std::string& path) {
   return ss.str();
 }
 
-RunResult runZrender(const std::vector<std::string>& args, const std::string& dir,
-                     const RunLimits& limits) {
+RunResult runProgram(const std::vector<std::string>& args, const std::string& dir,
+                     const RunLimits& limits, const Environment& environment) {
   TempDir capture;
   const std::string outPath = capture.file("stdout"), errPath = capture.file("stderr");
   const auto start = std::chrono::steady_clock::now();
@@ -110,13 +110,18 @@ RunResult runZrender(const std::vector<std::string>& args, const std::string& di
       if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(127);
     }
     if (limits.alarmSeconds) alarm(limits.alarmSeconds);  // survives exec
+    for (const auto& [name, value] : environment) {
+      if (value) {
+        setenv(name.c_str(), value->c_str(), 1);
+      } else {
+        unsetenv(name.c_str());
+      }
+    }
     std::vector<char*> argv;
-    std::string binary = ZRENDER_BINARY;
-    argv.push_back(binary.data());
     std::vector<std::string> copy = args;
     for (std::string& a : copy) argv.push_back(a.data());
     argv.push_back(nullptr);
-    execv(binary.c_str(), argv.data());
+    execvp(argv[0], argv.data());
     _exit(127);
   }
   int status = 0;
@@ -127,6 +132,13 @@ RunResult runZrender(const std::vector<std::string>& args, const std::string& di
   r.out = readFile(outPath);
   r.err = readFile(errPath);
   return r;
+}
+
+RunResult runZrender(const std::vector<std::string>& args, const std::string& dir,
+                     const RunLimits& limits, const Environment& environment) {
+  std::vector<std::string> argv = {ZRENDER_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return runProgram(argv, dir, limits, environment);
 }
 
 TempDir::TempDir() {

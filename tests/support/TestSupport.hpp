@@ -4,7 +4,9 @@
 // algorithm, and the reference models when setup has linked them.
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "zrender/io/SceneValidation.hpp"
@@ -67,10 +69,21 @@ struct RunLimits {
   unsigned long fileSizeLimit = 0;
 };
 
-// Runs the built zrender with `args` (each one argument, no shell quoting needed) in the
-// working directory `dir` (the project's folder when empty).
+// Changes to the environment of a child process: each variable set to its value, or removed
+// where the value is nullopt.
+using Environment = std::vector<std::pair<std::string, std::optional<std::string>>>;
+
+// Runs `argv` (argv[0] a path, or a name looked up in PATH; each one argument, no shell quoting
+// needed) in the working directory `dir` (the project's folder when empty), with `environment`
+// applied.
+RunResult runProgram(const std::vector<std::string>& argv, const std::string& dir = "",
+                     const RunLimits& limits = RunLimits(),
+                     const Environment& environment = Environment());
+
+// Runs the built zrender with `args`, as runProgram.
 RunResult runZrender(const std::vector<std::string>& args, const std::string& dir = "",
-                     const RunLimits& limits = RunLimits());
+                     const RunLimits& limits = RunLimits(),
+                     const Environment& environment = Environment());
 
 // A fresh empty folder under the system temp folder, removed by the destructor.
 struct TempDir {

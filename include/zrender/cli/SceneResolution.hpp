@@ -21,6 +21,7 @@ struct SceneOverrides {
   std::optional<std::string> shading;
   std::optional<int> msaa;
   bool noCull = false;
+  bool cull = false;  // --cull: cull back faces even where the scene says "cull": false
 };
 
 // The scene to render: the settings entry named `scene` (or, when `scene` is a model file and

@@ -1,23 +1,15 @@
 // libzrender_codecs.so: OpenCV's imgcodecs and videoio behind the C interface of
 // CodecPlugin.h, loaded by the program only when a format other than PNG or a video is used.
 
-#include <algorithm>
-#include <cstdio>
 #include <string>
 
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "zrender/base/Plugin.hpp"
 #include "zrender/io/CodecPlugin.h"
 
-namespace {
-
-void setError(char* error, size_t size, std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::snprintf(error, size, "%s", text.c_str());
-}
-
-}  // namespace
+using zrender::setPluginError;
 
 extern "C" {
 
@@ -25,9 +17,9 @@ __attribute__((visibility("default"))) int zrenderImwrite(const char* path, cons
                                                           char* error, size_t size) {
   try {
     if (cv::imwrite(path, *image)) return 0;
-    setError(error, size, "cannot write file");
+    setPluginError(error, size, "cannot write file");
   } catch (const cv::Exception& e) {
-    setError(error, size, "cannot encode image: " + e.msg);
+    setPluginError(error, size, "cannot encode image: " + e.msg);
   }
   return 1;
 }
@@ -37,9 +29,9 @@ __attribute__((visibility("default"))) int zrenderImread(const char* path, int f
   try {
     *out = cv::imread(path, flags);
     if (!out->empty()) return 0;
-    setError(error, size, "cannot be read as an image");
+    setPluginError(error, size, "cannot be read as an image");
   } catch (const cv::Exception& e) {
-    setError(error, size, "cannot decode image: " + e.msg);
+    setPluginError(error, size, "cannot decode image: " + e.msg);
   }
   return 1;
 }
