@@ -12,6 +12,7 @@ Threads::Threads(int count) : count_(std::max(count, 1)) {
     limit_ = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                    size_t(count_));
   arena_ = std::make_unique<tbb::task_arena>(count_);
+  slotMarks_ = std::make_unique<char[]>(size_t(count_));
 }
 
 int Threads::slot() const {

@@ -75,9 +75,13 @@ ZRENDER_AVX2 inline __m256i lanesUpTo(int x, int maxX) {
 }
 
 // Depth-tests the samples of `cell` (four keys) whose edge values r0..r2 are all >= 0 and whose
-// lane is in `inBounds`, at sample centres xCentre, and writes the winners.
+// lane is in `inBounds`, at sample centres xCentre, and writes the winners. A block reads and
+// writes back all four keys, unchanged where no sample wins; `lastOfRow`: the block may reach
+// past the row's end, into the next row, which another thread may be drawing (bands of rows):
+// it then touches the keys of `inBounds` only.
 ZRENDER_AVX2 inline void fillBlock(Avx2Triangle& t, DepthKey* cell, __m256i inBounds, __m256i r0,
-                                   __m256i r1, __m256i r2, __m256d xCentre, __m256d rowBase) {
+                                   __m256i r1, __m256i r2, __m256d xCentre, __m256d rowBase,
+                                   bool lastOfRow = false) {
   const __m256i outside = _mm256_or_si256(_mm256_or_si256(r0, r1), r2);  // sign bit: outside
   const __m256i cover = _mm256_and_si256(_mm256_cmpgt_epi64(outside, t.minusOne), inBounds);
   const __m256d z = _mm256_add_pd(_mm256_mul_pd(t.a, xCentre), rowBase);
@@ -85,9 +89,13 @@ ZRENDER_AVX2 inline void fillBlock(Avx2Triangle& t, DepthKey* cell, __m256i inBo
   bits = _mm_min_epi32(_mm_max_epi32(bits, t.loBits), t.hiBits);
   const __m256i key = _mm256_or_si256(_mm256_slli_epi64(_mm256_cvtepu32_epi64(bits), 32), t.id);
   __m256i* p = reinterpret_cast<__m256i*>(cell);
-  const __m256i old = _mm256_loadu_si256(p);
+  long long* q = reinterpret_cast<long long*>(cell);
+  const __m256i old = lastOfRow ? _mm256_maskload_epi64(q, inBounds) : _mm256_loadu_si256(p);
   const __m256i wins = _mm256_and_si256(cover, _mm256_cmpgt_epi64(old, key));
-  _mm256_storeu_si256(p, _mm256_blendv_epi8(old, key, wins));
+  if (lastOfRow)
+    _mm256_maskstore_epi64(q, wins, key);
+  else
+    _mm256_storeu_si256(p, _mm256_blendv_epi8(old, key, wins));
   t.testedLanes = _mm256_add_epi64(t.testedLanes, cover);
   t.writtenLanes = _mm256_add_epi64(t.writtenLanes, wins);
 }
@@ -114,8 +122,7 @@ ZRENDER_AVX2 inline uint64_t laneSum(__m256i v) {
 // this function and contraction is off), one rounding to float, the clamp on the bits as
 // signed integers, and a signed 64-bit key comparison (keys are below 2^63: depth bits <= those
 // of 1.0f). A block reads and writes back all four keys, unchanged where no sample wins, so a
-// block may run up to three samples past maxX: FrameBuffer keeps kPadding keys after the last
-// row for that.
+// block may run up to three samples past maxX, but not past the row's end (fillBlock).
 ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& plane, uint32_t faceId,
                                    FrameBuffer& fb, RenderStats& stats) {
   static_assert(FrameBuffer::kPadding >= 3, "a block of four may pass the last sample by three");
@@ -146,7 +153,8 @@ ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& pla
       __m256i r0 = rowStart[0], r1 = rowStart[1], r2 = rowStart[2];
       __m256d xCentre = firstCentre;
       for (int j = 0; j < blocks; ++j) {
-        fillBlock(t, cell + 4 * j, inBounds[j], r0, r1, r2, xCentre, rowBase);
+        fillBlock(t, cell + 4 * j, inBounds[j], r0, r1, r2, xCentre, rowBase,
+                  s.minX + 4 * j + 3 >= fb.width());
         nextBlock(r0, r1, r2, xCentre, blockStep, four);
       }
       for (int i = 0; i < 3; ++i) rowStart[i] = _mm256_add_epi64(rowStart[i], rowStep[i]);
@@ -163,7 +171,8 @@ ZRENDER_AVX2 void fillTriangleAvx2(const TriangleSetup& s, const DepthPlane& pla
       for (int x = s.minX; x <= s.maxX; x += 4) {
         const __m256i outside = _mm256_or_si256(_mm256_or_si256(r0, r1), r2);
         if (_mm256_movemask_pd(_mm256_castsi256_pd(outside)) != 0xF) {
-          fillBlock(t, row + x, lanesUpTo(x, s.maxX), r0, r1, r2, xCentre, rowBase);
+          fillBlock(t, row + x, lanesUpTo(x, s.maxX), r0, r1, r2, xCentre, rowBase,
+                    x + 3 >= fb.width());
           reached = true;
         } else if (reached) {
           break;  // a triangle's samples on a row are contiguous
@@ -200,7 +209,8 @@ ZRENDER_AVX2 uint64_t fillSpanAvx2(DepthKey* row, int left, int right, const Dep
   __m256d xCentre = _mm256_add_pd(_mm256_set1_pd(double(left)), _mm256_setr_pd(0.5, 1.5, 2.5, 3.5));
   const __m256i zero = _mm256_setzero_si256();  // edge values: every lane inside
   for (int x = left; x < right; x += 4) {
-    fillBlock(t, row + x, lanesUpTo(x, right - 1), zero, zero, zero, xCentre, base);
+    // The span's last block may reach past its end: the row's end, possibly.
+    fillBlock(t, row + x, lanesUpTo(x, right - 1), zero, zero, zero, xCentre, base, x + 4 > right);
     xCentre = _mm256_add_pd(xCentre, four);
   }
   return uint64_t(0) - laneSum(t.writtenLanes);

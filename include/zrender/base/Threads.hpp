@@ -9,7 +9,47 @@
 #include <oneapi/tbb/partitioner.h>
 #include <oneapi/tbb/task_arena.h>
 
+#if defined(__SANITIZE_THREAD__)
+extern "C" void __tsan_acquire(void* address);
+extern "C" void __tsan_release(void* address);
+#endif
+
 namespace zrender {
+
+// oneTBB's scheduler is not built with ThreadSanitizer, which then cannot see that a task
+// starts after the loop that spawned it and ends before the loop returns, nor that a thread
+// takes a slot (Threads::slot()) only after the thread that had it left: these marks tell it
+// (tools/tsan.sh). Nothing in other builds.
+class TaskEdges {
+ public:
+#if defined(__SANITIZE_THREAD__)
+  void spawn() {
+    __tsan_release(&spawned_);
+  }
+  void begin() {
+    __tsan_acquire(&spawned_);
+  }
+  void enter(void* slot) {
+    __tsan_acquire(slot);
+  }
+  void end(void* slot) {
+    __tsan_release(slot);
+    __tsan_release(&ended_);
+  }
+  void join() {
+    __tsan_acquire(&ended_);
+  }
+
+ private:
+  char spawned_ = 0, ended_ = 0;
+#else
+  void spawn() {}
+  void begin() {}
+  void enter(void*) {}
+  void end(void*) {}
+  void join() {}
+#endif
+};
 
 // The threads one renderer may use (docs/design.md, Threads): a oneTBB task arena of that
 // many, or, for one thread, none at all: its loops then run in order on the calling thread,
@@ -33,14 +73,25 @@ class Threads {
       for (size_t i = 0; i < n; ++i) f(i);
       return;
     }
+    TaskEdges edges;
+    edges.spawn();
+    // Isolated: a thread waiting for this loop inside a task of another takes none of the
+    // other's tasks, which would find the thread's scratch (by slot()) in use.
     arena_->execute([&] {
-      tbb::parallel_for(
-          tbb::blocked_range<size_t>(0, n, 1),
-          [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t i = r.begin(); i < r.end(); ++i) f(i);
-          },
-          tbb::simple_partitioner());
+      tbb::this_task_arena::isolate([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<size_t>(0, n, 1),
+            [&](const tbb::blocked_range<size_t>& r) {
+              edges.begin();
+              void* slot = &slotMarks_[size_t(this->slot())];
+              edges.enter(slot);
+              for (size_t i = r.begin(); i < r.end(); ++i) f(i);
+              edges.end(slot);
+            },
+            tbb::simple_partitioner());
+      });
     });
+    edges.join();
   }
 
   // f(begin, end) over [0, n) cut into ranges of about `grain` indices, spread over the
@@ -51,10 +102,21 @@ class Threads {
       if (n > 0) f(size_t(0), n);
       return;
     }
+    TaskEdges edges;
+    edges.spawn();
     arena_->execute([&] {
-      tbb::parallel_for(tbb::blocked_range<size_t>(0, n, grain),
-                        [&](const tbb::blocked_range<size_t>& r) { f(r.begin(), r.end()); });
+      tbb::this_task_arena::isolate([&] {
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, n, grain),
+                          [&](const tbb::blocked_range<size_t>& r) {
+                            edges.begin();
+                            void* slot = &slotMarks_[size_t(this->slot())];
+                            edges.enter(slot);
+                            f(r.begin(), r.end());
+                            edges.end(slot);
+                          });
+      });
     });
+    edges.join();
   }
 
  private:
@@ -64,6 +126,7 @@ class Threads {
   // requests alive at once applies).
   std::unique_ptr<tbb::global_control> limit_;
   std::unique_ptr<tbb::task_arena> arena_;
+  std::unique_ptr<char[]> slotMarks_;  // one address per slot, for TaskEdges
 };
 
 // The hardware threads of this machine (at least 1): the default of --threads.

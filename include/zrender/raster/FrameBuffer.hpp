@@ -13,8 +13,8 @@ namespace zrender {
 // computed afterwards from it (deferred shading), so all algorithms only have to agree here.
 class FrameBuffer {
  public:
-  // Keys after the last sample, never part of the image: a pixel loop may read and write back
-  // a few samples past the end of a row (fillTriangleAvx2, fillSpanAvx2), also on the last row.
+  // Keys after the last sample, never part of the image: room for a vector loop's last block.
+  // The pixel loops do not reach past a row's end (another thread may draw the next row).
   static constexpr size_t kPadding = 4;
 
   void resize(int width, int height) {

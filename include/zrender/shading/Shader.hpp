@@ -1,10 +1,9 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
-
-#include <oneapi/tbb/collaborative_call_once.h>
 
 #include <opencv2/core.hpp>
 
@@ -52,7 +51,8 @@ class Shader {
   // With several threads, before finish(threads): colors the pixel rows that sample rows
   // [first, end) complete, from any of `threads` (disjoint rows at once), when the frame's
   // faces can be prepared before its buffer is final (not in depth mode, nor for surfaces of
-  // a geometry too big to set up whole): the first call prepares them, the others wait.
+  // a geometry too big to set up whole): the first call prepares them (on all the threads), the
+  // others wait.
   // finish(threads) colors the rows left.
   void rowsReady(int first, int end, const Threads& threads);
 
@@ -94,7 +94,7 @@ class Shader {
   std::vector<Mat4> modelView_;      // per instance
   std::vector<uint32_t> rowColors_;  // two sample rows of packed colors
   // With several threads: whether faces are prepared (rowsReady), and the pixel rows colored.
-  std::unique_ptr<tbb::collaborative_once_flag> prepared_;
+  std::unique_ptr<std::once_flag> prepared_;
   bool earlyShading_ = false;
   std::vector<uint8_t> rowDone_;
 };
