@@ -54,9 +54,13 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
     FrameInput input{scene_, camera, *source_, geometry_, nullptr, &threads_};
     std::fill(bandShadeMs_.begin(), bandShadeMs_.end(), 0.0);
     if (threads_.parallel()) {
+      input.onFacesReady = [this, &shadeMs] {
+        ScopedTimer shading(shadeMs);
+        shader_.prepareRows(threads_);
+      };
       input.onRowsReady = [this](int first, int end) {
         ScopedTimer shading(bandShadeMs_[size_t(threads_.slot())]);
-        shader_.rowsReady(first, end, threads_);
+        shader_.rowsReady(first, end);
       };
     } else {
       input.onRowsFinal = [this, &shadeMs](int rows) {

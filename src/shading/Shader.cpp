@@ -93,7 +93,6 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   if (faceColors_) faceColors_->begin(modelView_, background_, geometry);
   if (surface_) surface_->begin(modelView_, camera, fb.width(), fb.height());
   perFace_ = scale == 1 && faceColors_;
-  prepared_ = std::make_unique<std::once_flag>();
   earlyShading_ = false;
   rowDone_.assign(size_t(color.rows), 0);
 }
@@ -135,8 +134,11 @@ bool Shader::prepareFaces(const Threads& threads, bool bufferFinal) {
   return true;
 }
 
-void Shader::rowsReady(int first, int end, const Threads& threads) {
-  std::call_once(*prepared_, [&] { earlyShading_ = prepareFaces(threads, false); });
+void Shader::prepareRows(const Threads& threads) {
+  earlyShading_ = prepareFaces(threads, false);
+}
+
+void Shader::rowsReady(int first, int end) {
   if (!earlyShading_) return;
   const int firstRow = (first + scale_ - 1) / scale_, endRow = std::min(end / scale_, color_->rows);
   if (firstRow >= endRow) return;

@@ -45,6 +45,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
 
 void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const Threads& threads = *input.threads;
+  input.facesReady();
   const int width = fb.width(), height = fb.height();
   const GeometryVector<ScreenTriangle>& triangles =
       bands_.bin(input.geometry, width, height, threads);

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -48,13 +47,13 @@ class Shader {
   void finish();
   // finish() with the rows shared out among `threads` (with one thread, finish() itself).
   void finish(const Threads& threads);
-  // With several threads, before finish(threads): colors the pixel rows that sample rows
-  // [first, end) complete, from any of `threads` (disjoint rows at once), when the frame's
-  // faces can be prepared before its buffer is final (not in depth mode, nor for surfaces of
-  // a geometry too big to set up whole): the first call prepares them (on all the threads), the
-  // others wait.
+  // With several threads, once the geometry holds every face of the frame: prepares their
+  // colors or surfaces on `threads`, where that needs no final buffer (not in depth mode, nor
+  // for surfaces of a geometry too big to set up whole). Then rowsReady(first, end) colors the
+  // pixel rows that sample rows [first, end) complete, from any thread (disjoint rows at once);
   // finish(threads) colors the rows left.
-  void rowsReady(int first, int end, const Threads& threads);
+  void prepareRows(const Threads& threads);
+  void rowsReady(int first, int end);
 
  private:
   // The packed color (0x00RRGGBB) of a sample, in the modes without a surface. `shared`: from
@@ -94,7 +93,6 @@ class Shader {
   std::vector<Mat4> modelView_;      // per instance
   std::vector<uint32_t> rowColors_;  // two sample rows of packed colors
   // With several threads: whether faces are prepared (rowsReady), and the pixel rows colored.
-  std::unique_ptr<std::once_flag> prepared_;
   bool earlyShading_ = false;
   std::vector<uint8_t> rowDone_;
 };

@@ -21,6 +21,7 @@ class PolygonBands {
             const TablesOf& tablesOf, const DrawBand& drawBand) {
     const Threads& threads = *input.threads;
     const FrameGeometry& g = input.geometry;
+    input.facesReady();
     const RowBands bands(height, threads.count() * kBandsPerThread);
     faceLists_.build(g.faces.size(), bands, threads, [&](size_t f, int& first, int& last) {
       return faceRows(g, uint32_t(f), height, first, last);

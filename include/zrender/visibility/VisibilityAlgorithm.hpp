@@ -36,12 +36,18 @@ struct FrameInput {
   const Threads* threads = nullptr;
   // With several threads: sample rows [first, end) hold their final keys, so that they are
   // shaded by the thread that drew them while still in its cache. Any thread may call it; the
-  // rows of different calls never overlap. May be empty.
+  // rows of different calls never overlap. May be empty. Rows are shaded then only if the
+  // algorithm said before, from the thread that called render(), that the geometry holds every
+  // face of the frame (onFacesReady), so that the faces' colors are prepared ahead.
   std::function<void(int, int)> onRowsReady = nullptr;
+  std::function<void()> onFacesReady = nullptr;
 
   bool parallel() const { return threads != nullptr && threads->parallel(); }
   void rowsReady(int first, int end) const {
     if (onRowsReady) onRowsReady(first, end);
+  }
+  void facesReady() const {
+    if (onFacesReady) onFacesReady();
   }
   void rowsFinal(int rows) const {
     if (onRowsFinal) onRowsFinal(rows);
