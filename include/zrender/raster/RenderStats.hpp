@@ -36,15 +36,16 @@ struct RenderStats {
     octreeNodesCulled += o.octreeNodesCulled;
     pixelsTested += o.pixelsTested;
     pixelsWritten += o.pixelsWritten;
-    for (const auto& [name, value] : o.extra) {
+    for (const auto& counter : o.extra) {
+      const std::string& name = counter.first;
       auto it =
           std::find_if(extra.begin(), extra.end(), [&](const auto& e) { return e.first == name; });
       if (it == extra.end())
-        extra.emplace_back(name, value);
+        extra.push_back(counter);
       else if (name.rfind("max_", 0) == 0)
-        it->second = std::max(it->second, value);
+        it->second = std::max(it->second, counter.second);
       else
-        it->second += value;
+        it->second += counter.second;
     }
     return *this;
   }
