@@ -38,22 +38,24 @@ const GeometryVector<ScreenTriangle>& TriangleBands::sort(const FrameGeometry& g
   return sorted_;
 }
 
-const GeometryVector<ScreenTriangle>& TriangleBands::bin(const FrameGeometry& g, int width,
-                                                         int height, const Threads& threads) {
+const GeometryVector<ScreenTriangle>& TriangleBands::bin(
+    const std::vector<const FrameGeometry*>& parts, int width, int height, const Threads& threads) {
   const int bandCount = ((height - 1) >> kBandShift) + 1;
   const RowBands bands(height, bandCount, 1 << kBandShift);
+  std::vector<size_t> sizes;
+  for (const FrameGeometry* g : parts) sizes.push_back(g->triangles.size());
   // Copied into place, so that a band's pixel loop reads its triangles in a row.
-  placer_.place(
-      g.triangles.size(), bands, threads,
-      [&](size_t i, int& first, int& last) {
+  placer_.placeSegments(
+      sizes, bands, threads,
+      [&](size_t part, size_t i, int& first, int& last) {
         int top = 0, bottom = 0;
-        if (!bandsOf(g.triangles[i], width, height, top, bottom)) return false;
+        if (!bandsOf(parts[part]->triangles[i], width, height, top, bottom)) return false;
         first = top << kBandShift;
         last = bottom << kBandShift;
         return true;
       },
       [&](uint32_t total) { sorted_.resize(total); },
-      [&](size_t i, uint32_t k) { sorted_[k] = g.triangles[i]; });
+      [&](size_t part, size_t i, uint32_t k) { sorted_[k] = parts[part]->triangles[i]; });
   bandStart_ = placer_.starts();
   return sorted_;
 }

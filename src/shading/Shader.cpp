@@ -134,6 +134,11 @@ bool Shader::prepareFaces(const Threads& threads, bool bufferFinal) {
   return true;
 }
 
+void Shader::forgetGeometry() {
+  geometry_ = nullptr;
+  if (faceColors_) faceColors_->begin(modelView_, background_, nullptr);
+}
+
 void Shader::prepareRows(const Threads& threads) {
   earlyShading_ = prepareFaces(threads, false);
 }

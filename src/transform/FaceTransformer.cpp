@@ -126,7 +126,16 @@ void appendChunk(const FrameGeometry& chunk, const size_t base[3], FrameGeometry
 
 }  // namespace
 
-void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter) {
+void FaceTransformer::pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) {
+  if (!(threads_ && threads_->parallel())) {
+    GeometrySource::pullAllParts(out, parts);
+    return;
+  }
+  pullParallel(-1, out, nullptr, &parts);
+}
+
+void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
+                                   std::vector<const FrameGeometry*>* parts) {
   ScopedTimer timer(transformMs_);
   const Threads& threads = *threads_;
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
@@ -194,6 +203,13 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
   }
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
+  const size_t samples = size_t(out.width) * size_t(out.height);
+  if (parts && (sizes[1] - out.faces.size()) * 16 > samples) {
+    parts->clear();
+    for (uint32_t c = 0; c < chunks; ++c) parts->push_back(&chunks_[c]);
+    return;
+  }
+  if (parts) parts->assign(1, &out);
   out.vertices.resize(sizes[0]);
   out.faces.resize(sizes[1]);
   out.triangles.resize(sizes[2]);

@@ -7,11 +7,11 @@
 namespace zrender {
 
 void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
-  input.source.pullAll(input.geometry);
   if (input.parallel()) {
     renderBands(input, fb, stats);
     return;
   }
+  input.source.pullAll(input.geometry);
   const int width = fb.width(), height = fb.height();
   const GeometryVector<ScreenTriangle>& triangles = bands_.sort(input.geometry, width, height);
 
@@ -45,10 +45,11 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
 
 void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const Threads& threads = *input.threads;
-  input.facesReady();
+  input.source.pullAllParts(input.geometry, parts_);
+  // A big frame's faces stay in parts, which the shader does not want anyway.
+  input.facesReady(parts_.size() == 1 && parts_[0] == &input.geometry);
   const int width = fb.width(), height = fb.height();
-  const GeometryVector<ScreenTriangle>& triangles =
-      bands_.bin(input.geometry, width, height, threads);
+  const GeometryVector<ScreenTriangle>& triangles = bands_.bin(parts_, width, height, threads);
   // Each band is cleared and drawn by one thread, its triangles clipped to its rows; a
   // triangle is counted by the first band it reaches, as one thread counts it once.
   bandStats_.assign(size_t(bands_.bandCount()), RenderStats());

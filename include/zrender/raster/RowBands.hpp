@@ -57,21 +57,43 @@ class BandPlacer {
   template <typename RowsOf, typename Size, typename Place>
   void place(size_t n, const RowBands& bands, const Threads& threads, const RowsOf& rowsOf,
              const Size& size, const Place& place) {
+    placeSegments(
+        std::vector<size_t>{n}, bands, threads,
+        [&](size_t, size_t i, int& first, int& last) { return rowsOf(i, first, last); }, size,
+        [&](size_t, size_t i, uint32_t k) { place(i, k); });
+  }
+
+  // The same for items in segments (the parts of a frame's geometry), segment after segment:
+  // rowsOf(segment, i, first, last) and place(segment, i, k) for item i of a segment.
+  template <typename RowsOf, typename Size, typename Place>
+  void placeSegments(const std::vector<size_t>& segments, const RowBands& bands,
+                     const Threads& threads, const RowsOf& rowsOf, const Size& size,
+                     const Place& place) {
     constexpr size_t kChunk = 4096;
     constexpr uint64_t kNone = ~uint64_t(0);
-    const size_t count = size_t(bands.count()), chunks = (n + kChunk - 1) / kChunk;
+    using Chunk = ChunkRange;
+    chunks_.clear();
+    size_t n = 0;
+    for (size_t s = 0; s < segments.size(); ++s) {
+      for (size_t b = 0; b < segments[s]; b += kChunk)
+        chunks_.push_back(Chunk{s, b, std::min(segments[s], b + kChunk), n + b});
+      n += segments[s];
+    }
+    const size_t count = size_t(bands.count()), chunks = chunks_.size();
     cursor_.assign(chunks * count, 0);
     range_.resize(n);  // each item's first and last band, from the counting pass
     threads.forEach(chunks, [&](size_t c) {
+      const Chunk& k = chunks_[c];
       uint32_t* counts = cursor_.data() + c * count;
-      for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+      for (size_t i = k.begin; i < k.end; ++i) {
+        uint64_t& range = range_[k.first + i - k.begin];
         int first = 0, last = 0;
-        if (!rowsOf(i, first, last)) {
-          range_[i] = kNone;
+        if (!rowsOf(k.segment, i, first, last)) {
+          range = kNone;
           continue;
         }
         const uint32_t b0 = uint32_t(bands.bandOf(first)), b1 = uint32_t(bands.bandOf(last));
-        range_[i] = uint64_t(b0) << 32 | b1;
+        range = uint64_t(b0) << 32 | b1;
         for (uint32_t b = b0; b <= b1; ++b) ++counts[b];
       }
     });
@@ -89,11 +111,13 @@ class BandPlacer {
     start_[count] = total;
     size(total);
     threads.forEach(chunks, [&](size_t c) {
+      const Chunk& k = chunks_[c];
       uint32_t* at = cursor_.data() + c * count;
-      for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
-        if (range_[i] == kNone) continue;
-        for (uint32_t b = uint32_t(range_[i] >> 32); b <= uint32_t(range_[i]); ++b)
-          place(i, at[b]++);
+      for (size_t i = k.begin; i < k.end; ++i) {
+        const uint64_t range = range_[k.first + i - k.begin];
+        if (range == kNone) continue;
+        for (uint32_t b = uint32_t(range >> 32); b <= uint32_t(range); ++b)
+          place(k.segment, i, at[b]++);
       }
     });
   }
@@ -102,8 +126,12 @@ class BandPlacer {
   const std::vector<uint32_t>& starts() const { return start_; }
 
  private:
+  struct ChunkRange {
+    size_t segment, begin, end, first;  // items [begin, end) of a segment; first: overall
+  };
   std::vector<uint32_t> start_, cursor_;
   std::vector<uint64_t> range_;
+  std::vector<ChunkRange> chunks_;
 };
 
 // The items of each band, as BandPlacer places them.

@@ -31,7 +31,12 @@ class TriangleBands {
   // triangle clipped to the band's rows): the same order within a band. Counted and copied by
   // `threads`; valid until the next call.
   const GeometryVector<ScreenTriangle>& bin(const FrameGeometry& g, int width, int height,
-                                            const Threads& threads);
+                                            const Threads& threads) {
+    return bin(std::vector<const FrameGeometry*>{&g}, width, height, threads);
+  }
+  // The same for the triangles of geometry in parts (GeometrySource::pullAllParts).
+  const GeometryVector<ScreenTriangle>& bin(const std::vector<const FrameGeometry*>& parts,
+                                            int width, int height, const Threads& threads);
 
   // After sort() or bin(): the bands, and the triangles of band b (rows b * 32 to b * 32 + 31)
   // at indices [bandStart(b), bandStart(b + 1)) of the sorted triangles.

@@ -53,6 +53,9 @@ class Shader {
   // pixel rows that sample rows [first, end) complete, from any thread (disjoint rows at once);
   // finish(threads) colors the rows left.
   void prepareRows(const Threads& threads);
+  // The geometry given to begin() turns out not to hold the frame's faces: the faces are
+  // found otherwise (all the scene's, or those in the buffer).
+  void forgetGeometry();
   void rowsReady(int first, int end);
 
  private:

@@ -36,6 +36,9 @@ class FaceTransformer : public GeometrySource {
 
   void beginFrame(const Camera& camera) override;
   void pullAll(FrameGeometry& out) override;
+  // On several threads, the parts are the chunks of pullAll() left apart when the faces are
+  // too many for the shader to want them (more than a sixteenth of the samples).
+  void pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) override;
   void pullInstance(uint32_t instance, FrameGeometry& out,
                     TriangleFilter* filter = nullptr) override;
   void pullBatch(uint32_t batch, FrameGeometry& out) override;
@@ -57,7 +60,8 @@ class FaceTransformer : public GeometrySource {
   // pullAll() (`instance` -1) or pullInstance() on several threads: the faces in chunks, each
   // into geometry of its own, then joined in face id order. `filter` is asked from every
   // thread at once.
-  void pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter);
+  void pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
+                    std::vector<const FrameGeometry*>* parts = nullptr);
   // A chunk's part of pullAllParallel: faces [faceBegin, faceEnd) of `instance`, whose
   // vertices `vertices` holds, by `assembler`.
   void assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,

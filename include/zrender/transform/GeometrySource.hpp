@@ -62,6 +62,14 @@ class GeometrySource {
 
   // Every face of every instance, in face id order.
   virtual void pullAll(FrameGeometry& out) = 0;
+  // The same, but the faces may be left in parts (geometries with indices of their own, in
+  // face id order part after part) rather than joined into `out`, which then gets only the
+  // counters: joining a big frame's parts is a copy of all its triangles. For algorithms that
+  // read them on several threads. By default one part, `out` itself after pullAll().
+  virtual void pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) {
+    pullAll(out);
+    parts.assign(1, &out);
+  }
   // Every face of one grid instance, in face id order. With `filter`, triangle faces it proves
   // hidden are left out (counted in out.counters.filtered, or dropped uncounted by hidden()).
   virtual void pullInstance(uint32_t instance, FrameGeometry& out,

@@ -40,14 +40,15 @@ struct FrameInput {
   // algorithm said before, from the thread that called render(), that the geometry holds every
   // face of the frame (onFacesReady), so that the faces' colors are prepared ahead.
   std::function<void(int, int)> onRowsReady = nullptr;
-  std::function<void()> onFacesReady = nullptr;
+  // The argument: whether `geometry` holds the frame's faces (false: they are elsewhere).
+  std::function<void(bool)> onFacesReady = nullptr;
 
   bool parallel() const { return threads != nullptr && threads->parallel(); }
   void rowsReady(int first, int end) const {
     if (onRowsReady) onRowsReady(first, end);
   }
-  void facesReady() const {
-    if (onFacesReady) onFacesReady();
+  void facesReady(bool inGeometry = true) const {
+    if (onFacesReady) onFacesReady(inGeometry);
   }
   void rowsFinal(int rows) const {
     if (onRowsFinal) onRowsFinal(rows);

@@ -19,7 +19,8 @@ class ZBufferAlgorithm : public VisibilityAlgorithm {
   void renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats);
 
   TriangleBands bands_;
-  std::vector<RenderStats> bandStats_;  // renderBands(): each band's counters
+  std::vector<RenderStats> bandStats_;       // renderBands(): each band's counters
+  std::vector<const FrameGeometry*> parts_;  // renderBands(): the frame's geometry
 };
 
 }  // namespace zrender
