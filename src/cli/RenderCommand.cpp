@@ -164,15 +164,18 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
       video->write(renderer.color());
     } else {
       const fs::path path = turntable ? fs::path(framePath(colorPath.string(), frame)) : colorPath;
-      writeImageAtomically(path, renderer.color());
+      writeImageAtomically(path, renderer.color(), &renderer.threadPool());
     }
     if (options.contactSheet) sheetFrames.push_back(renderer.color().clone());
     if (options.depth) {
-      writeImageAtomically(*options.depth, depthImage(renderer.buffer(), renderer.sampleScale(),
-                                                      lowerExtension(*options.depth) == ".png"));
+      writeImageAtomically(*options.depth,
+                           depthImage(renderer.buffer(), renderer.sampleScale(),
+                                      lowerExtension(*options.depth) == ".png"),
+                           &renderer.threadPool());
     }
     if (options.ids)
-      writeImageAtomically(*options.ids, idImage(renderer.buffer(), renderer.sampleScale()));
+      writeImageAtomically(*options.ids, idImage(renderer.buffer(), renderer.sampleScale()),
+                           &renderer.threadPool());
     const double writeMs = nowMs() - writeStart;
 
     if (options.json) {
@@ -213,7 +216,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     if (ec) throw InputError(colorPath.string() + ": cannot write file: " + ec.message());
     videoTmp.clear();
   }
-  if (options.contactSheet) writeImageAtomically(*options.contactSheet, contactSheet(sheetFrames));
+  if (options.contactSheet)
+    writeImageAtomically(*options.contactSheet, contactSheet(sheetFrames), &renderer.threadPool());
   return 0;
 }
 

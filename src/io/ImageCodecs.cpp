@@ -11,7 +11,9 @@
 #include <opencv2/imgproc.hpp>
 
 #include "zrender/base/Plugin.hpp"
+#include "zrender/base/Threads.hpp"
 #include "zrender/io/CodecPlugin.h"
+#include "zrender/io/PngWriter.hpp"
 
 // Where the build put the plugin; the directory of the executable is searched first.
 #ifndef ZRENDER_CODECS_PLUGIN
@@ -61,67 +63,22 @@ const CodecPlugin& codecPlugin() {
   return plugin;
 }
 
-// libpng reports errors by longjmp back to the setjmp in writePngRows; the message is kept here.
-void pngError(png_structp png, png_const_charp message) {
-  auto* error = static_cast<std::string*>(png_get_error_ptr(png));
-  *error = message;
-  png_longjmp(png, 1);
-}
-
-void pngWarning(png_structp, png_const_charp) {}
-
-// The libpng calls of writePng, in a function with no C++ object alive across setjmp.
-bool writePngRows(FILE* file, const cv::Mat& image, int bitDepth, int colorType,
-                  std::string* error) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, pngError, pngWarning);
-  if (!png) return false;
-  png_infop info = png_create_info_struct(png);
-  if (!info || setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
+bool writePng(const fs::path& path, const cv::Mat& image, const Threads& threads,
+              std::string& error) {
+  if (!pngCanHold(image)) {
+    error = image.empty() ? "PNG cannot hold an empty image" : "PNG cannot hold this image type";
     return false;
-  }
-  png_init_io(png, file);
-  png_set_IHDR(png, info, png_uint_32(image.cols), png_uint_32(image.rows), bitDepth, colorType,
-               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  // Speed over size: zlib level 1 without row filters (libpng would otherwise try all five
-  // per row), the fastest and smallest of the level 1 variants measured (docs/performance.md).
-  png_set_compression_level(png, 1);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
-  png_write_info(png, info);
-  if (colorType == PNG_COLOR_TYPE_RGB) png_set_bgr(png);  // OpenCV stores BGR
-  if (bitDepth == 16) png_set_swap(png);                  // PNG is big-endian
-  for (int y = 0; y < image.rows; ++y)
-    png_write_row(png, const_cast<png_bytep>(image.ptr<png_byte>(y)));
-  png_write_end(png, info);
-  png_destroy_write_struct(&png, &info);
-  return true;
-}
-
-bool writePng(const fs::path& path, const cv::Mat& image, std::string& error) {
-  int bitDepth = 8, colorType = PNG_COLOR_TYPE_RGB;
-  switch (image.type()) {
-    case CV_8UC3:
-      break;
-    case CV_8UC1:
-      colorType = PNG_COLOR_TYPE_GRAY;
-      break;
-    case CV_16UC1:
-      bitDepth = 16, colorType = PNG_COLOR_TYPE_GRAY;
-      break;
-    default:
-      error = "PNG cannot hold this image type";
-      return false;
   }
   FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) {
     error = "cannot write file";
     return false;
   }
-  std::string pngMessage;
-  const bool ok = writePngRows(file, image, bitDepth, colorType, &pngMessage);
+  std::string reason;
+  const bool ok = encodePng(file, image, threads, reason);
   const bool closed = std::fclose(file) == 0;
   if (!ok || !closed) {
-    error = "cannot write file" + (pngMessage.empty() ? std::string() : ": " + pngMessage);
+    error = "cannot write file" + (reason.empty() ? std::string() : ": " + reason);
     return false;
   }
   return true;
@@ -153,8 +110,12 @@ bool isPng(const fs::path& path) {
 
 }  // namespace
 
-bool encodeImageFile(const fs::path& path, const cv::Mat& image, std::string& error) {
-  if (isPng(path)) return writePng(path, image, error);
+bool encodeImageFile(const fs::path& path, const cv::Mat& image, std::string& error,
+                     const Threads* threads) {
+  if (isPng(path)) {
+    const Threads one;
+    return writePng(path, image, threads ? *threads : one, error);
+  }
   char message[512] = "";
   if (codecPlugin().imwrite(path.c_str(), &image, message, sizeof message) == 0) return true;
   error = message;

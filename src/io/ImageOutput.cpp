@@ -71,13 +71,14 @@ void checkWritable(const std::filesystem::path& path) {
   fs::remove(probe, ec);
 }
 
-void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image) {
+void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image,
+                          const Threads* threads) {
   namespace fs = std::filesystem;
   std::error_code ec;
   createParentFolders(path);
   const fs::path tmp = pathBeside(path, "tmp");
   std::string reason;
-  if (!encodeImageFile(tmp, image, reason)) {
+  if (!encodeImageFile(tmp, image, reason, threads)) {
     fs::remove(tmp, ec);
     throw InputError(path.string() + ": " + reason);
   }

@@ -1,10 +1,11 @@
 #pragma once
 
-// Image and video files. PNG, which every render writes, goes through libpng directly. The
-// other formats and video go through OpenCV's imgcodecs and videoio, which live in a plugin
-// (libzrender_codecs.so) loaded on first use: on Debian those two libraries pull in about 200
-// shared libraries (GDAL, ffmpeg, ...) whose loading alone costs more CPU per process than the
-// whole render of the bunny (docs/performance.md).
+// Image and video files. PNG, which every render writes, is encoded here (PngWriter), on
+// several threads when given them; libpng reads it. The other formats and video go through
+// OpenCV's imgcodecs and videoio, which live in a plugin (libzrender_codecs.so) loaded on first
+// use: on Debian those two libraries pull in about 200 shared libraries (GDAL, ffmpeg, ...)
+// whose loading alone costs more CPU per process than the whole render of the bunny
+// (docs/performance.md).
 
 #include <filesystem>
 #include <memory>
@@ -14,12 +15,16 @@
 
 namespace zrender {
 
+class Threads;
+
 // The extension of `path` in lower case (".png" for "X.PNG"); formats are chosen by it.
 std::string lowerExtension(const std::filesystem::path& path);
 
 // Encodes `image` (CV_8UC1, CV_8UC3 BGR, CV_16UC1, or CV_32FC1 for .tif/.exr) into `path`, the
-// format chosen by the extension. Returns false and sets `error` on failure.
-bool encodeImageFile(const std::filesystem::path& path, const cv::Mat& image, std::string& error);
+// format chosen by the extension; a PNG is deflated by `threads` when there are several (null:
+// one). Returns false and sets `error` on failure.
+bool encodeImageFile(const std::filesystem::path& path, const cv::Mat& image, std::string& error,
+                     const Threads* threads = nullptr);
 
 // Decodes an image file into CV_8UC3 (BGR). Returns an empty Mat and sets `error` on failure.
 cv::Mat decodeColorImage(const std::filesystem::path& path, std::string& error);

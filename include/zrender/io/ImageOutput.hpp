@@ -8,6 +8,8 @@
 
 namespace zrender {
 
+class Threads;
+
 // Throws InputError unless `path` ends in one of `allowed` (e.g. {".png", ".tif"}), so that a
 // bad output name fails before any rendering.
 void checkOutputExtension(const std::filesystem::path& path,
@@ -28,7 +30,9 @@ void checkWritable(const std::filesystem::path& path);
 
 // Writes an image completely or not at all: encodes to a temporary file beside the target,
 // then renames it over the target; missing parent folders are created. InputError on failure.
-void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image);
+// A PNG is encoded by `threads` when there are several (null: one thread).
+void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image,
+                          const Threads* threads = nullptr);
 
 // The depth buffer at pixel resolution (with MSAA, each pixel's nearest sample): CV_32FC1 in
 // 0..1 for .tif/.exr, CV_16UC1 round(depth * 65535) for .png (near = dark); background is 1.

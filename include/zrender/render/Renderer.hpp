@@ -52,6 +52,8 @@ class Renderer {
 
   double prepareMs() const { return prepareMs_; }
   int threads() const { return threads_.count(); }
+  // The threads themselves, for work on the frame after it is rendered (encoding its image).
+  const Threads& threadPool() const { return threads_; }
   int sampleScale() const { return sampleScale_; }
   const FrameBuffer& buffer() const { return buffer_; }
   const cv::Mat& color() const { return color_; }

@@ -1,0 +1,236 @@
+#include "zrender/io/PngWriter.hpp"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "zrender/base/Threads.hpp"
+#include "zrender/base/UninitializedAllocator.hpp"
+
+namespace zrender {
+
+namespace {
+
+// Grown and then written in full: no zeroing first.
+using Bytes = std::vector<unsigned char, UninitializedAllocator<unsigned char>>;
+
+// PNG's fixed numbers (PNG specification, sections 5.2 and 11.2.2).
+constexpr unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+constexpr int kColorGray = 0, kColorRgb = 2;
+constexpr unsigned char kFilterNone = 0;
+// The zlib header: deflate with a 32 KiB window (0x78), "fastest" level, check bits (0x01).
+constexpr unsigned char kZlibHeader[2] = {0x78, 0x01};
+
+void putBigEndian32(unsigned char* p, uint32_t v) {
+  p[0] = uint8_t(v >> 24), p[1] = uint8_t(v >> 16), p[2] = uint8_t(v >> 8), p[3] = uint8_t(v);
+}
+
+// Bytes of one row as PNG stores it, filter byte excluded.
+size_t sampleBytes(const cv::Mat& image) {
+  return size_t(image.cols) * image.elemSize();
+}
+
+// One row as PNG stores it: the filter byte, then RGB for BGR, big-endian for 16-bit.
+void filterRow(const cv::Mat& image, int y, unsigned char* out) {
+  out[0] = kFilterNone;
+  unsigned char* samples = out + 1;
+  const unsigned char* in = image.ptr<unsigned char>(y);
+  const size_t n = sampleBytes(image);
+  if (image.type() == CV_8UC3) {
+    for (size_t i = 0; i < n; i += 3)
+      samples[i] = in[i + 2], samples[i + 1] = in[i + 1], samples[i + 2] = in[i];
+  } else if (image.type() == CV_16UC1) {
+    for (size_t i = 0; i < n; i += 2) samples[i] = in[i + 1], samples[i + 1] = in[i];
+  } else {
+    std::memcpy(samples, in, n);
+  }
+}
+
+// A raw deflate stream (no zlib header or trailer) at level 1, appending to `out`.
+class RawDeflater {
+ public:
+  RawDeflater() {
+    // Window 2^15 as the zlib header says; memory level 8 and the default strategy, as libpng
+    // uses for unfiltered rows.
+    ok_ = deflateInit2(&z_, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) == Z_OK;
+  }
+  ~RawDeflater() {
+    if (ok_) deflateEnd(&z_);
+  }
+  RawDeflater(const RawDeflater&) = delete;
+  RawDeflater& operator=(const RawDeflater&) = delete;
+
+  bool ok() const { return ok_; }
+
+  // Deflates `n` bytes into `out`; `flush` is Z_NO_FLUSH, Z_SYNC_FLUSH (all input out, ending
+  // on a byte boundary) or Z_FINISH (the stream's last block). False on failure.
+  bool add(const unsigned char* data, size_t n, int flush, Bytes& out) {
+    z_.next_in = const_cast<Bytef*>(data);
+    z_.avail_in = uInt(n);
+    for (;;) {
+      // Room for a sync flush's marker and a block's end even when the input is all taken.
+      if (out.capacity() - out.size() < 64) out.reserve(2 * out.capacity() + 64);
+      const size_t used = out.size();
+      out.resize(out.capacity());
+      z_.next_out = out.data() + used;
+      z_.avail_out = uInt(out.size() - used);
+      const int rc = deflate(&z_, flush);
+      out.resize(out.size() - z_.avail_out);
+      if (rc != Z_OK && rc != Z_STREAM_END && rc != Z_BUF_ERROR) return false;
+      // Done when every byte is in and, for a flush, zlib had room to say all it had.
+      if (flush == Z_FINISH ? rc == Z_STREAM_END : z_.avail_in == 0 && z_.avail_out > 0)
+        return true;
+    }
+  }
+
+ private:
+  z_stream z_{};
+  bool ok_ = false;
+};
+
+// One strip's part of the zlib stream: its rows deflated, and their Adler-32.
+struct Strip {
+  Bytes deflated;
+  uLong adler = 0;
+  size_t filteredBytes = 0;
+  bool ok = false;
+};
+
+// Rows [first, end) filtered and deflated; the last strip finishes the deflate stream.
+Strip deflateStrip(const cv::Mat& image, int first, int end, bool last) {
+  Strip strip;
+  RawDeflater deflater;
+  if (!deflater.ok()) return strip;
+  const size_t rowBytes = 1 + sampleBytes(image);
+  strip.filteredBytes = rowBytes * size_t(end - first);
+  // Level 1 on rendered frames gives about a tenth of the input; noise gives all of it.
+  strip.deflated.reserve(strip.filteredBytes / 8 + 64);
+  strip.adler = adler32(0, nullptr, 0);
+  Bytes row(rowBytes);
+  for (int y = first; y < end; ++y) {
+    filterRow(image, y, row.data());
+    strip.adler = adler32_z(strip.adler, row.data(), rowBytes);
+    const int flush = y + 1 < end ? Z_NO_FLUSH : last ? Z_FINISH : Z_SYNC_FLUSH;
+    if (!deflater.add(row.data(), rowBytes, flush, strip.deflated)) return strip;
+  }
+  strip.ok = true;
+  return strip;
+}
+
+// Bytes laid end to end without copying them.
+struct Piece {
+  const unsigned char* data;
+  size_t size;
+};
+
+bool writeAll(std::FILE* file, const void* data, size_t n) {
+  return std::fwrite(data, 1, n, file) == n;
+}
+
+// A chunk's length and type; `crc` starts its CRC-32, which covers the type and the data.
+bool beginChunk(std::FILE* file, const char* type, size_t length, uLong& crc) {
+  unsigned char head[8];
+  putBigEndian32(head, uint32_t(length));
+  std::memcpy(head + 4, type, 4);
+  crc = crc32(crc32(0, nullptr, 0), head + 4, 4);
+  return writeAll(file, head, sizeof head);
+}
+
+bool endChunk(std::FILE* file, uLong crc) {
+  unsigned char tail[4];
+  putBigEndian32(tail, uint32_t(crc));
+  return writeAll(file, tail, sizeof tail);
+}
+
+// Data of one chunk, or part of it.
+bool writeChunkData(std::FILE* file, const unsigned char* data, size_t n, uLong& crc) {
+  if (n == 0) return true;  // IEND's: crc32 of a null pointer would be 0, not `crc`
+  crc = crc32_z(crc, data, n);
+  return writeAll(file, data, n);
+}
+
+bool writeChunk(std::FILE* file, const char* type, const unsigned char* data, size_t n) {
+  uLong crc;
+  return beginChunk(file, type, n, crc) && writeChunkData(file, data, n, crc) &&
+         endChunk(file, crc);
+}
+
+// The zlib stream made of `pieces` as IDAT chunks of at most kPngChunkBytes each; a chunk may
+// span pieces.
+bool writeIdat(std::FILE* file, const std::vector<Piece>& pieces) {
+  size_t total = 0;
+  for (const Piece& p : pieces) total += p.size;
+  size_t piece = 0, offset = 0;  // the next byte to write: pieces[piece].data[offset]
+  while (total > 0) {
+    const size_t length = std::min(total, kPngChunkBytes);
+    uLong crc;
+    if (!beginChunk(file, "IDAT", length, crc)) return false;
+    for (size_t left = length; left > 0;) {
+      if (offset == pieces[piece].size) {
+        ++piece, offset = 0;
+        continue;
+      }
+      const size_t n = std::min(left, pieces[piece].size - offset);
+      if (!writeChunkData(file, pieces[piece].data + offset, n, crc)) return false;
+      offset += n, left -= n;
+    }
+    if (!endChunk(file, crc)) return false;
+    total -= length;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool pngCanHold(const cv::Mat& image) {
+  const int type = image.type();
+  return !image.empty() && (type == CV_8UC3 || type == CV_8UC1 || type == CV_16UC1);
+}
+
+bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, std::string& error,
+               size_t stripBytes) {
+  const size_t rowBytes = 1 + sampleBytes(image);
+  const int rowsPerStrip = int(std::clamp<size_t>(stripBytes / rowBytes, 1, size_t(image.rows)));
+  const size_t stripCount = (size_t(image.rows) + size_t(rowsPerStrip) - 1) / size_t(rowsPerStrip);
+  std::vector<Strip> strips(stripCount);
+  threads.forEach(stripCount, [&](size_t i) {
+    const int first = int(i) * rowsPerStrip;
+    strips[i] =
+        deflateStrip(image, first, std::min(first + rowsPerStrip, image.rows), i + 1 == stripCount);
+  });
+
+  std::vector<Piece> pieces = {{kZlibHeader, sizeof kZlibHeader}};
+  uLong adler = adler32(0, nullptr, 0);
+  for (const Strip& s : strips) {
+    if (!s.ok) {
+      error = "out of memory";  // the only way zlib's deflate fails on valid arguments
+      return false;
+    }
+    pieces.push_back({s.deflated.data(), s.deflated.size()});
+    adler = adler32_combine(adler, s.adler, z_off_t(s.filteredBytes));
+  }
+  unsigned char trailer[4];
+  putBigEndian32(trailer, uint32_t(adler));
+  pieces.push_back({trailer, sizeof trailer});
+
+  const bool gray = image.channels() == 1;
+  unsigned char header[13];
+  putBigEndian32(header, uint32_t(image.cols));
+  putBigEndian32(header + 4, uint32_t(image.rows));
+  header[8] = uint8_t(image.elemSize1() * 8);  // bits per sample
+  header[9] = uint8_t(gray ? kColorGray : kColorRgb);
+  header[10] = header[11] = header[12] = 0;  // deflate, adaptive filtering, no interlace
+  errno = 0;
+  if (writeAll(file, kSignature, sizeof kSignature) &&
+      writeChunk(file, "IHDR", header, sizeof header) && writeIdat(file, pieces) &&
+      writeChunk(file, "IEND", nullptr, 0) && std::fflush(file) == 0)
+    return true;
+  error = errno ? std::strerror(errno) : "write failed";
+  return false;
+}
+
+}  // namespace zrender
