@@ -42,7 +42,16 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
   {
     ScopedTimer timer(frameMs);
     source_->beginFrame(camera);
-    buffer_.resize(geometry_.width, geometry_.height);
+    if (buffer_.resize(geometry_.width, geometry_.height) && threads_.parallel()) {
+      // New memory is zeroed by the kernel at its first write, a huge page (2 MiB) at a time:
+      // written first in one contiguous part per thread, the pages are zeroed in parallel, not
+      // one after another as the bands of the algorithms, a few rows each, would reach them.
+      const size_t parts = size_t(threads_.count()), n = buffer_.size();
+      DepthKey* keys = buffer_.data();
+      threads_.forEach(parts, [&](size_t i) {
+        std::fill(keys + n * i / parts, keys + n * (i + 1) / parts, kClearKey);
+      });
+    }
     {
       ScopedTimer shading(shadeMs);
       shader_.begin(buffer_, camera, sampleScale_, color_,

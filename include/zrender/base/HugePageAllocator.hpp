@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <new>
+#include <type_traits>
+#include <utility>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -16,7 +18,9 @@ namespace zrender {
 // loops that jump around the image miss the TLB less (every algorithm's raster measured faster:
 // docs/performance.md). Straight from mmap because only pages first touched after the
 // advice become huge, and malloc may return memory it has touched before. Smaller blocks come
-// from operator new.
+// from operator new. Like UninitializedAllocator, resize() leaves new elements of trivial types
+// uninitialized: the owner writes them, and the first write to a page is what faults it in
+// (the kernel zeroes it then), so writing them on several threads spreads that cost.
 template <class T>
 struct HugePageAllocator {
   using value_type = T;
@@ -29,6 +33,15 @@ struct HugePageAllocator {
   HugePageAllocator() = default;
   template <class U>
   HugePageAllocator(const HugePageAllocator<U>&) {}
+
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    ::new (static_cast<void*>(p)) U;  // default-initialized: indeterminate for trivial types
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
 
   T* allocate(std::size_t n) {
     if (n > (std::size_t(-1) - 2 * kHugePage) / sizeof(T)) throw std::bad_alloc();

@@ -17,10 +17,17 @@ class FrameBuffer {
   // The pixel loops do not reach past a row's end (another thread may draw the next row).
   static constexpr size_t kPadding = 4;
 
-  void resize(int width, int height) {
+  // The samples' keys are left as they are (new ones indeterminate) until the algorithm clears
+  // its rows; the padding is cleared here. True when the keys are in new memory, which the
+  // kernel zeroes page by page at its first write.
+  bool resize(int width, int height) {
     width_ = width;
     height_ = height;
-    keys_.resize(size_t(width) * size_t(height) + kPadding);
+    const size_t n = size_t(width) * size_t(height) + kPadding;
+    const bool fresh = n > keys_.capacity();
+    keys_.resize(n);
+    std::fill(keys_.end() - kPadding, keys_.end(), kClearKey);
+    return fresh;
   }
   void clear() { std::fill(keys_.begin(), keys_.end(), kClearKey); }
 
