@@ -3,12 +3,12 @@
 #include <cstddef>
 #include <cstdint>
 #include <new>
-#include <type_traits>
-#include <utility>
 
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+
+#include "zrender/base/UninitializedAllocator.hpp"
 
 namespace zrender {
 
@@ -22,8 +22,12 @@ namespace zrender {
 // uninitialized: the owner writes them, and the first write to a page is what faults it in
 // (the kernel zeroes it then), so writing them on several threads spreads that cost.
 template <class T>
-struct HugePageAllocator {
+struct HugePageAllocator : UninitializedAllocator<T> {
   using value_type = T;
+  template <class U>
+  struct rebind {
+    using other = HugePageAllocator<U>;
+  };
   static constexpr std::size_t kHugePage = std::size_t(1) << 21;  // bytes
 
   static std::size_t wholePages(std::size_t bytes) {
@@ -33,15 +37,6 @@ struct HugePageAllocator {
   HugePageAllocator() = default;
   template <class U>
   HugePageAllocator(const HugePageAllocator<U>&) {}
-
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(p)) U;  // default-initialized: indeterminate for trivial types
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
 
   T* allocate(std::size_t n) {
     if (n > (std::size_t(-1) - 2 * kHugePage) / sizeof(T)) throw std::bad_alloc();
