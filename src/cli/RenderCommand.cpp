@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/base/Threads.hpp"
 #include "zrender/cli/Report.hpp"
 #include "zrender/io/ContactSheet.hpp"
 #include "zrender/io/ImageCodecs.hpp"
@@ -100,7 +101,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   if (options.ids) checkOutputExtension(*options.ids, {".png"}, "id image");
 
   const double loadStart = nowMs();
-  const Scene scene = loadScene(settings, warnings);
+  const Threads loadThreads(options.threads);
+  const Scene scene = loadScene(settings, warnings, &loadThreads);
   const double loadMs = nowMs() - loadStart;
   flushWarnings();
 

@@ -20,6 +20,7 @@
 
 #include <tiny_obj_loader.h>
 
+#include "zrender/base/SideBySide.hpp"
 #include "zrender/io/ObjScanner.hpp"
 
 namespace zrender {
@@ -201,39 +202,29 @@ std::string readFile(const fs::path& path, const std::string& file) {
   return text;
 }
 
-}  // namespace
+// tinyobjloader's pass over the text: the statements in a Builder, the .mtl files read.
+struct Parsed {
+  Builder builder;
+  Warnings warnings;  // the .mtl files' (missing ones)
+  bool mtlMissing = false;
+};
 
-Mesh loadObj(const std::filesystem::path& path, Warnings& warnings) {
-  return loadObjFromText(readFile(path, path.string()), path, warnings);
-}
-
-Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
-                     Warnings& warnings) {
-  const std::string file = path.string();
-  std::string_view text(data);
-  // tinyobjloader does not skip a UTF-8 byte order mark; the first statement would be lost.
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
-  // UTF-16 text reads as lines cut at their NUL bytes, so the scan would only report "no
-  // faces"; the byte order mark tells what is really wrong.
-  if (text.substr(0, 2) == "\xFF\xFE" || text.substr(0, 2) == "\xFE\xFF") {
-    throw InputError(file + ":1: UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
-  }
-
-  const ObjCounts counts = scanObj(file, text);
-  if (counts.faces == 0) throw InputError(file + ": model has no faces");
-
+// `counts`, when known, sizes the arrays up front.
+void parseWithTinyobj(std::string_view text, const std::string& file, const fs::path& folder,
+                      const ObjCounts* counts, Parsed& parsed) {
   // The callback API rather than ObjReader/LoadObj, whose shapes cannot hold this mesh: they
   // store a face's corner count in an unsigned char (faces above 255 corners wrap), drop faces
   // below 3 corners (shifting every later face id), and split faces into shapes by g/o/usemtl.
   // The callbacks arrive one per statement in file order, with the corner count as an int.
-  Builder builder;
-  Mesh& mesh = builder.mesh;
-  mesh.positions.reserve(counts.attributes[0]);
-  mesh.texcoords.reserve(counts.attributes[1]);
-  mesh.normals.reserve(counts.attributes[2]);
-  mesh.corners.reserve(counts.corners);
-  mesh.faceStart.reserve(counts.faces + 1);
-  mesh.faceMaterial.reserve(counts.faces);
+  Mesh& mesh = parsed.builder.mesh;
+  if (counts) {
+    mesh.positions.reserve(counts->attributes[0]);
+    mesh.texcoords.reserve(counts->attributes[1]);
+    mesh.normals.reserve(counts->attributes[2]);
+    mesh.corners.reserve(counts->corners);
+    mesh.faceStart.reserve(counts->faces + 1);
+    mesh.faceMaterial.reserve(counts->faces);
+  }
   mesh.faceStart.push_back(0);
 
   tinyobj::callback_t callbacks;
@@ -244,12 +235,53 @@ Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
   callbacks.usemtl_cb = &Builder::onUseMaterial;
   callbacks.mtllib_cb = &Builder::onMaterials;
 
-  const fs::path folder = path.parent_path();
-  MtlReader mtlReader(file, folder, warnings);
+  MtlReader mtlReader(file, folder, parsed.warnings);
   MemoryBuf buffer(text);
   std::istream stream(&buffer);
   std::string tinyWarnings, tinyErrors;  // ours are more precise; these are dropped
-  tinyobj::LoadObjWithCallback(stream, callbacks, &builder, &mtlReader, &tinyWarnings, &tinyErrors);
+  tinyobj::LoadObjWithCallback(stream, callbacks, &parsed.builder, &mtlReader, &tinyWarnings,
+                               &tinyErrors);
+  parsed.mtlMissing = mtlReader.missing();
+}
+
+}  // namespace
+
+Mesh loadObj(const std::filesystem::path& path, Warnings& warnings, const Threads* threads) {
+  return loadObjFromText(readFile(path, path.string()), path, warnings, threads);
+}
+
+Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path, Warnings& warnings,
+                     const Threads* threads) {
+  const std::string file = path.string();
+  std::string_view text(data);
+  // tinyobjloader does not skip a UTF-8 byte order mark; the first statement would be lost.
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  // UTF-16 text reads as lines cut at their NUL bytes, so the scan would only report "no
+  // faces"; the byte order mark tells what is really wrong.
+  if (text.substr(0, 2) == "\xFF\xFE" || text.substr(0, 2) == "\xFE\xFF") {
+    throw InputError(file + ":1: UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
+  }
+
+  // The scan checks every statement, tinyobjloader stores them: two passes over the text that
+  // need nothing from each other, so with threads they run side by side (the scan then no
+  // longer sizes the arrays). tinyobjloader may then read text that the scan rejects: its
+  // result is used only when the scan accepts the text (the fuzz target runs both ways).
+  ObjCounts counts;
+  Parsed parsed;
+  const bool together = threads && threads->parallel();
+  sideBySide(
+      threads,
+      [&] {
+        counts = scanObj(file, text);
+        if (counts.faces == 0) throw InputError(file + ": model has no faces");
+      },
+      [&] {
+        parseWithTinyobj(text, file, path.parent_path(), together ? nullptr : &counts, parsed);
+      });
+  warnings.insert(warnings.end(), parsed.warnings.begin(), parsed.warnings.end());
+  Builder& builder = parsed.builder;
+  Mesh& mesh = builder.mesh;
+  const fs::path folder = path.parent_path();
 
   // The scan and tinyobjloader split lines and match statements the same way; if they ever
   // disagreed, the indices checked by the scan would not be the ones stored.
@@ -279,7 +311,7 @@ Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
   }
 
   // After a missing .mtl every usemtl would be unknown; that file's warning says enough.
-  if (!mtlReader.missing()) {
+  if (!parsed.mtlMissing) {
     for (const std::string& name : builder.unknownMaterials) {
       warnings.push_back(file + ": material '" + quoteName(name) + "' not found");
     }

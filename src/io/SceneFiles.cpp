@@ -3,6 +3,7 @@
 #include <memory>
 #include <string>
 
+#include "zrender/base/SideBySide.hpp"
 #include "zrender/io/ImageCodecs.hpp"
 #include "zrender/io/ObjLoader.hpp"
 
@@ -32,9 +33,21 @@ cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& w
   return texture;
 }
 
-Scene loadScene(const SceneSettings& settings, Warnings& warnings) {
-  auto mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
-  cv::Mat texture = loadTexture(settings, *mesh, warnings);
+Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads* threads) {
+  std::shared_ptr<const Mesh> mesh;
+  cv::Mat texture;
+  if (!settings.texture) {  // the texture may be named by the model's materials
+    mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads));
+    texture = loadTexture(settings, *mesh, warnings);
+    return makeScene(settings, std::move(mesh), std::move(texture));
+  }
+  // Warnings in the order of loading one after the other: the model's, then the texture's.
+  Warnings textureWarnings;
+  sideBySide(
+      threads,
+      [&] { mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads)); },
+      [&] { texture = loadTexture(settings, Mesh(), textureWarnings); });
+  warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
   return makeScene(settings, std::move(mesh), std::move(texture));
 }
 

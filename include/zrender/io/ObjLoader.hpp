@@ -8,6 +8,8 @@
 
 namespace zrender {
 
+class Threads;
+
 // Largest polygon accepted, in corners. Window-space ear clipping is quadratic in the corner
 // count, so larger faces are refused with an InputError instead of stalling.
 constexpr uint32_t kMaxFaceCorners = 4096;
@@ -17,13 +19,15 @@ constexpr uint32_t kMaxFaceCorners = 4096;
 // malformed line, an index out of range (0, past the end, negative before the start), a NaN or
 // infinite coordinate, a face above kMaxFaceCorners, or a model with no faces. A missing .mtl or
 // texture file is a warning. Faces with fewer than 3 corners are kept (they get a face id) and
-// are skipped as degenerate when drawn.
-Mesh loadObj(const std::filesystem::path& path, Warnings& warnings);
+// are skipped as degenerate when drawn. With `threads` (more than one), the checks and the
+// parse run side by side.
+Mesh loadObj(const std::filesystem::path& path, Warnings& warnings,
+             const Threads* threads = nullptr);
 
 // The same loader on OBJ text already in memory (the fuzz targets use it): `nameForMessages`
 // starts every message, and the .mtl files named by mtllib are looked up beside it. loadObj is
 // this function after reading the file.
 Mesh loadObjFromText(const std::string& text, const std::filesystem::path& nameForMessages,
-                     Warnings& warnings);
+                     Warnings& warnings, const Threads* threads = nullptr);
 
 }  // namespace zrender
