@@ -80,7 +80,7 @@ struct Outcome {
 Outcome load(const std::string& obj, const fs::path& objPath, const zrender::Threads* threads) {
   Outcome outcome;
   try {
-    outcome.mesh = zrender::loadObjFromText(obj, objPath, outcome.warnings, threads);
+    outcome.mesh = zrender::loadObjFromText(obj, objPath, outcome.warnings, threads, 64);
     checkMesh(outcome.mesh);
   } catch (const zrender::InputError& e) {
     zrender::fuzz::checkMessage(e.what(), objPath.string() + ":", "error");
@@ -113,8 +113,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fs::remove(mtlPath, ec);  // exercises the missing-.mtl warning
   }
 
-  // One thread: the scan, then the parse. Two: side by side, where the parse also reads text
-  // that the scan rejects; the outcome must be the same.
+  // One thread: the scan, then the parse. Two: side by side, the parse in parts of 64 bytes or
+  // more, and it also reads text that the scan rejects; the outcome must be the same.
   const Outcome alone = load(obj, objPath, nullptr);
   static const zrender::Threads two(2);
   const Outcome together = load(obj, objPath, &two);

@@ -1,5 +1,6 @@
 #include "zrender/io/ObjLoader.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -87,6 +88,11 @@ struct Builder {
   int32_t currentMaterial = -1;
   // Ordinal of the first v / vt / vn statement with a non-finite value (overflow), or npos.
   size_t firstNonFinite[3] = {std::string::npos, std::string::npos, std::string::npos};
+  // For a part of the text (parseInParts): the corner fields resolved from a relative index,
+  // 3 * corner + k for position, texcoord, normal, which the parts before it shift; and
+  // whether a material statement came, which the parts cannot share.
+  std::vector<size_t> relativeFields;
+  bool sawMaterials = false;
 
   void noteFinite(int kind, bool finite, size_t ordinal) {
     if (!finite && firstNonFinite[kind] == std::string::npos) firstNonFinite[kind] = ordinal;
@@ -129,6 +135,10 @@ struct Builder {
       c.position = resolve(indices[i].vertex_index, m.positions.size());
       c.texcoord = resolve(indices[i].texcoord_index, m.texcoords.size());
       c.normal = resolve(indices[i].normal_index, m.normals.size());
+      const int raw[3] = {indices[i].vertex_index, indices[i].texcoord_index,
+                          indices[i].normal_index};
+      for (int k = 0; k < 3; ++k)
+        if (raw[k] < 0) b.relativeFields.push_back(3 * m.corners.size() + size_t(k));
       m.corners.push_back(c);
     }
     m.faceStart.push_back(static_cast<uint32_t>(m.corners.size()));
@@ -138,6 +148,7 @@ struct Builder {
   // Looked up by our own trimmed name: tinyobjloader keeps trailing blanks of a usemtl line.
   static void onUseMaterial(void* self, const char* name, int /*tinyobjId*/) {
     auto& b = *static_cast<Builder*>(self);
+    b.sawMaterials = true;
     const std::string key(trim(name));
     const auto it = b.materialIndex.find(key);
     b.currentMaterial = it == b.materialIndex.end() ? -1 : it->second;
@@ -149,6 +160,7 @@ struct Builder {
   // Called after each mtllib with every material loaded so far.
   static void onMaterials(void* self, const tinyobj::material_t* materials, int count) {
     auto& b = *static_cast<Builder*>(self);
+    b.sawMaterials = true;
     b.materials.assign(materials, materials + count);
     b.materialIndex.clear();
     for (int i = 0; i < count; ++i) {
@@ -224,6 +236,17 @@ void parseWithTinyobj(std::string_view text, const std::string& file, const fs::
     mesh.corners.reserve(counts->corners);
     mesh.faceStart.reserve(counts->faces + 1);
     mesh.faceMaterial.reserve(counts->faces);
+  } else {
+    // As many as the text could hold at most (a statement takes 6 bytes or more, a corner 2):
+    // the arrays never grow, whose copies would each be new memory, which the kernel zeroes
+    // page by page; what is reserved and not written costs no memory.
+    const size_t statements = text.size() / 6 + 1;
+    mesh.positions.reserve(statements);
+    mesh.texcoords.reserve(statements);
+    mesh.normals.reserve(statements);
+    mesh.corners.reserve(text.size() / 2 + 1);
+    mesh.faceStart.reserve(statements + 1);
+    mesh.faceMaterial.reserve(statements);
   }
   mesh.faceStart.push_back(0);
 
@@ -244,6 +267,65 @@ void parseWithTinyobj(std::string_view text, const std::string& file, const fs::
   parsed.mtlMissing = mtlReader.missing();
 }
 
+// The text cut at line ends into at most `parts` pieces of at least `minBytes` each.
+std::vector<std::string_view> cutAtLineEnds(std::string_view text, size_t parts, size_t minBytes) {
+  std::vector<std::string_view> pieces;
+  const size_t step = std::max(minBytes, text.size() / std::max<size_t>(parts, 1) + 1);
+  while (!text.empty()) {
+    size_t end = text.size();
+    if (text.size() > step) {
+      const size_t newline = text.find('\n', step - 1);
+      if (newline != std::string_view::npos) end = newline + 1;
+    }
+    pieces.push_back(text.substr(0, end));
+    text.remove_prefix(end);
+  }
+  return pieces;
+}
+
+// The parts' statements one after the other, as one pass over the whole text would give them.
+void joinParts(std::vector<Parsed>& parts, Parsed& whole) {
+  Mesh& mesh = whole.builder.mesh;
+  size_t sizes[6] = {};
+  for (const Parsed& part : parts) {
+    const Mesh& m = part.builder.mesh;
+    sizes[0] += m.positions.size(), sizes[1] += m.texcoords.size();
+    sizes[2] += m.normals.size(), sizes[3] += m.corners.size();
+    sizes[4] += m.faceCount(), sizes[5] += part.warnings.size();
+  }
+  mesh.positions.reserve(sizes[0]);
+  mesh.texcoords.reserve(sizes[1]);
+  mesh.normals.reserve(sizes[2]);
+  mesh.corners.reserve(sizes[3]);
+  mesh.faceStart.reserve(sizes[4] + 1);
+  mesh.faceMaterial.reserve(sizes[4]);
+  mesh.faceStart.assign(1, 0);
+  for (Parsed& part : parts) {
+    const Mesh& m = part.builder.mesh;
+    // What the parts before this one hold: where its relative indices count from.
+    const size_t base[3] = {mesh.positions.size(), mesh.texcoords.size(), mesh.normals.size()};
+    for (int k = 0; k < 3; ++k) {
+      const size_t first = part.builder.firstNonFinite[k];
+      if (first != std::string::npos && whole.builder.firstNonFinite[k] == std::string::npos)
+        whole.builder.firstNonFinite[k] = base[k] + first;
+    }
+    const size_t firstCorner = mesh.corners.size();
+    mesh.positions.insert(mesh.positions.end(), m.positions.begin(), m.positions.end());
+    mesh.texcoords.insert(mesh.texcoords.end(), m.texcoords.begin(), m.texcoords.end());
+    mesh.normals.insert(mesh.normals.end(), m.normals.begin(), m.normals.end());
+    mesh.corners.insert(mesh.corners.end(), m.corners.begin(), m.corners.end());
+    for (size_t field : part.builder.relativeFields) {
+      Corner& c = mesh.corners[firstCorner + field / 3];
+      int32_t& index = field % 3 == 0 ? c.position : field % 3 == 1 ? c.texcoord : c.normal;
+      index = int32_t(int64_t(index) + int64_t(base[field % 3]));
+    }
+    for (size_t f = 1; f < m.faceStart.size(); ++f)
+      mesh.faceStart.push_back(uint32_t(firstCorner + m.faceStart[f]));
+    mesh.faceMaterial.insert(mesh.faceMaterial.end(), m.faceMaterial.begin(), m.faceMaterial.end());
+    whole.warnings.insert(whole.warnings.end(), part.warnings.begin(), part.warnings.end());
+  }
+}
+
 }  // namespace
 
 Mesh loadObj(const std::filesystem::path& path, Warnings& warnings, const Threads* threads) {
@@ -251,7 +333,7 @@ Mesh loadObj(const std::filesystem::path& path, Warnings& warnings, const Thread
 }
 
 Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path, Warnings& warnings,
-                     const Threads* threads) {
+                     const Threads* threads, size_t minPartBytes) {
   const std::string file = path.string();
   std::string_view text(data);
   // tinyobjloader does not skip a UTF-8 byte order mark; the first statement would be lost.
@@ -262,26 +344,48 @@ Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
     throw InputError(file + ":1: UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
   }
 
-  // The scan checks every statement, tinyobjloader stores them: two passes over the text that
-  // need nothing from each other, so with threads they run side by side (the scan then no
-  // longer sizes the arrays). tinyobjloader may then read text that the scan rejects: its
-  // result is used only when the scan accepts the text (the fuzz target runs both ways).
+  // The scan checks every statement, tinyobjloader stores them: passes over the text that need
+  // nothing from each other. With threads they run side by side, tinyobjloader's cut into parts
+  // at line ends, all jobs of one loop (a loop nested in a job would keep the thread that
+  // finishes the scan from helping with the parts). The scan then no longer sizes the arrays.
+  // tinyobjloader may read text that the scan rejects: its result is used only when the scan
+  // accepts the text (the fuzz target runs both ways).
   ObjCounts counts;
   Parsed parsed;
-  const bool together = threads && threads->parallel();
-  sideBySide(
-      threads,
-      [&] {
-        counts = scanObj(file, text);
-        if (counts.faces == 0) throw InputError(file + ": model has no faces");
-      },
-      [&] {
-        parseWithTinyobj(text, file, path.parent_path(), together ? nullptr : &counts, parsed);
-      });
+  const auto scan = [&] {
+    counts = scanObj(file, text);
+    if (counts.faces == 0) throw InputError(file + ": model has no faces");
+  };
+  const fs::path folder = path.parent_path();
+  if (!threads || !threads->parallel()) {
+    scan();
+    parseWithTinyobj(text, file, folder, &counts, parsed);
+  } else {
+    const std::vector<std::string_view> pieces =
+        cutAtLineEnds(text, size_t(threads->count()) * 4, minPartBytes);
+    std::vector<Parsed> parts(pieces.size());
+    sideBySide(threads, 1 + pieces.size(), [&](size_t job) {
+      if (job == 0) {
+        scan();
+      } else {
+        parseWithTinyobj(pieces[job - 1], file, folder, nullptr, parts[job - 1]);
+      }
+    });
+    // Material statements carry state from one part to the next (the current material, the
+    // materials loaded so far): a text with any is parsed in one pass after all.
+    bool materials = false;
+    for (const Parsed& part : parts) materials = materials || part.builder.sawMaterials;
+    if (parts.size() == 1) {
+      parsed = std::move(parts[0]);
+    } else if (materials) {
+      parseWithTinyobj(text, file, folder, &counts, parsed);
+    } else {
+      joinParts(parts, parsed);
+    }
+  }
   warnings.insert(warnings.end(), parsed.warnings.begin(), parsed.warnings.end());
   Builder& builder = parsed.builder;
   Mesh& mesh = builder.mesh;
-  const fs::path folder = path.parent_path();
 
   // The scan and tinyobjloader split lines and match statements the same way; if they ever
   // disagreed, the indices checked by the scan would not be the ones stored.

@@ -43,10 +43,13 @@ Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads
   }
   // Warnings in the order of loading one after the other: the model's, then the texture's.
   Warnings textureWarnings;
-  sideBySide(
-      threads,
-      [&] { mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads)); },
-      [&] { texture = loadTexture(settings, Mesh(), textureWarnings); });
+  sideBySide(threads, 2, [&](size_t job) {
+    if (job == 0) {
+      mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads));
+    } else {
+      texture = loadTexture(settings, Mesh(), textureWarnings);
+    }
+  });
   warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
   return makeScene(settings, std::move(mesh), std::move(texture));
 }

@@ -1,33 +1,30 @@
 #pragma once
 
+#include <cstddef>
 #include <exception>
+#include <vector>
 
 #include "zrender/base/Threads.hpp"
 
 namespace zrender {
 
-// Runs first() and second(), two independent jobs: side by side on `threads` when it has more
-// than one, else in order (second() only if first() returned). Either way the caller sees what
-// running them in order would throw: first()'s exception, else second()'s. So second() may run
-// after a failure of first() that would have stopped it; it must keep its effects (warnings,
-// results) to itself until both have returned.
-template <typename First, typename Second>
-void sideBySide(const Threads* threads, const First& first, const Second& second) {
+// Runs job(0) to job(n - 1), independent jobs: side by side on `threads` when it has more than
+// one, else in order (stopping at the first that throws). Either way the caller sees what
+// running them in order would throw: the exception of the first job, by index, that threw. So a
+// job may run after a failure of an earlier one that would have stopped it; it must keep its
+// effects (warnings, results) to itself until all have returned.
+template <typename Job>
+void sideBySide(const Threads* threads, size_t n, const Job& job) {
   if (!threads || !threads->parallel()) {
-    first();
-    second();
+    for (size_t i = 0; i < n; ++i) job(i);
     return;
   }
-  std::exception_ptr errors[2];
-  threads->forEach(2, [&](size_t job) {
+  std::vector<std::exception_ptr> errors(n);
+  threads->forEach(n, [&](size_t i) {
     try {
-      if (job == 0) {
-        first();
-      } else {
-        second();
-      }
+      job(i);
     } catch (...) {
-      errors[job] = std::current_exception();
+      errors[i] = std::current_exception();
     }
   });
   for (const std::exception_ptr& error : errors)

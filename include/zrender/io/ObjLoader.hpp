@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -24,10 +25,16 @@ constexpr uint32_t kMaxFaceCorners = 4096;
 Mesh loadObj(const std::filesystem::path& path, Warnings& warnings,
              const Threads* threads = nullptr);
 
+// With threads, tinyobjloader parses a text of more than this many bytes in parts, each of at
+// least this many (a part's parse has a fixed cost: its own callbacks and arrays).
+constexpr size_t kObjMinPartBytes = size_t(1) << 18;
+
 // The same loader on OBJ text already in memory (the fuzz targets use it): `nameForMessages`
 // starts every message, and the .mtl files named by mtllib are looked up beside it. loadObj is
-// this function after reading the file.
+// this function after reading the file. `minPartBytes`: tests and the fuzz target make it small
+// so that small texts are parsed in parts too.
 Mesh loadObjFromText(const std::string& text, const std::filesystem::path& nameForMessages,
-                     Warnings& warnings, const Threads* threads = nullptr);
+                     Warnings& warnings, const Threads* threads = nullptr,
+                     size_t minPartBytes = kObjMinPartBytes);
 
 }  // namespace zrender
