@@ -14,7 +14,8 @@ were measured, e.g.:
 
 With --wall it times the whole command instead (start to exit, as a user waits for it; no
 --json added; every other round runs the binaries in reverse order) and prints per binary the
-median, least and most wall time of the rounds, e.g. a turntable:
+median, least and most wall time of the rounds, and the median over the rounds of its time
+divided by the first binary's in the same round, e.g. a turntable:
 
     tools/ab.py --wall --runs 9 /tmp/zrender-before build/zrender -- bunny --turntable 24 \
         --threads 2 -o /tmp/t/%03d.png
@@ -120,10 +121,14 @@ def main():
         print(f"wall seconds of {options.runs} alternated runs of: {' '.join(args)}")
         if options.idle:
             print(f"rounds started on a busy machine (waited a minute): {busy_rounds}")
+        first = seconds[options.binaries[0]]
         for binary in options.binaries:
             s = seconds[binary]
+            # The ratio within each round, whose runs are back to back: steadier than the ratio
+            # of the medians when the machine's load drifts between rounds.
+            ratio = statistics.median(b / a for a, b in zip(first, s))
             print(f"{binary:<{width}}  median {statistics.median(s):7.3f}  min {min(s):7.3f}  "
-                  f"max {max(s):7.3f}")
+                  f"max {max(s):7.3f}  median ratio to the first {ratio:6.3f}")
         return
 
     values = {b: {f: [] for f in FIELDS} for b in options.binaries}
