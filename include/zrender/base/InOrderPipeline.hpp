@@ -40,6 +40,10 @@ void pipelineInOrder(const Threads& threads, size_t n, size_t slots, const Work&
     }
     ~Marked() { edges.end(mark); }
   };
+  struct Joined {  // the caller goes on after every item's stage, also when one threw
+    TaskEdges& edges;
+    ~Joined() { edges.join(); }
+  } joined{edges};
   const std::unique_ptr<char[]> slotMarks = std::make_unique<char[]>(slots);
   char inputMark = 0, finishMark = 0;
   size_t next = 0;
@@ -64,7 +68,6 @@ void pipelineInOrder(const Threads& threads, size_t n, size_t slots, const Work&
                    tbb::make_filter<size_t, size_t>(tbb::filter_mode::parallel, parallel) &
                    tbb::make_filter<size_t, void>(tbb::filter_mode::serial_in_order, inOrder));
   });
-  edges.join();
 }
 
 }  // namespace zrender
