@@ -12,6 +12,18 @@ were measured, e.g.:
     cp build/zrender /tmp/zrender-before      # then change, rebuild, and:
     tools/ab.py /tmp/zrender-before build/zrender -- crowd --alg octree --repeat 9 -o /tmp/x.png
 
+With --wall it times the whole command instead (start to exit, as a user waits for it; no
+--json added; every other round runs the binaries in reverse order) and prints per binary the
+median, least and most wall time of the rounds, and the median over the rounds of its time
+divided by the first binary's in the same round, e.g. a turntable:
+
+    tools/ab.py --wall --runs 9 /tmp/zrender-before build/zrender -- bunny --turntable 24 \
+        --threads 2 -o /tmp/t/%03d.png
+
+With --idle, each round waits (up to a minute) until the machine has been idle for half a
+second (the other processes using under a tenth of the processors), so that a round does not
+start while another job is building or testing; the rounds that could not wait are counted.
+
 Give -o: without it every run writes SCENE.png into the current folder. Exit status 2 on bad
 arguments or when a run fails or prints no JSON.
 """
@@ -21,6 +33,7 @@ import json
 import statistics
 import subprocess
 import sys
+import time
 
 FIELDS = ("transform_ms", "visibility_ms", "shade_ms", "raster_ms", "raster_ms_min", "frame_ms")
 
@@ -43,6 +56,40 @@ def run_once(binary, args):
     return json.loads(lines[-1])
 
 
+def busy_fraction(seconds=0.5):
+    """The fraction of the processors' time that was not idle over `seconds`."""
+    def ticks():
+        with open("/proc/stat") as f:
+            fields = [int(x) for x in f.readline().split()[1:]]
+        return sum(fields), fields[3] + fields[4]  # idle and iowait
+    total0, idle0 = ticks()
+    time.sleep(seconds)
+    total1, idle1 = ticks()
+    return 1.0 - (idle1 - idle0) / max(total1 - total0, 1)
+
+
+def wait_idle(limit=60.0):
+    """Waits until the machine is idle; False if it was not within `limit` seconds."""
+    start = time.perf_counter()
+    while busy_fraction() > 0.1:
+        if time.perf_counter() - start > limit:
+            return False
+    return True
+
+
+def wall_once(binary, args):
+    start = time.perf_counter()
+    try:
+        done = subprocess.run([binary, *args], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                              text=True)
+    except OSError as e:
+        fail(f"{binary}: {e.strerror}")
+    seconds = time.perf_counter() - start
+    if done.returncode != 0:
+        fail(f"{binary} exited with {done.returncode}: {done.stderr.strip()}")
+    return seconds
+
+
 def main():
     argv = sys.argv[1:]
     if "--" not in argv:
@@ -50,6 +97,8 @@ def main():
     split = argv.index("--")
     parser = argparse.ArgumentParser(prog="ab.py", description="alternated zrender runs")
     parser.add_argument("--runs", type=int, default=7, help="rounds (default 7)")
+    parser.add_argument("--wall", action="store_true", help="time whole runs (seconds)")
+    parser.add_argument("--idle", action="store_true", help="start each round on an idle machine")
     parser.add_argument("binaries", nargs="+", help="zrender executables to compare")
     options = parser.parse_args(argv[:split])
     if options.runs < 1:
@@ -58,8 +107,34 @@ def main():
     if not args:
         fail("no zrender arguments after --")
 
+    busy_rounds = 0
+    if options.wall:
+        seconds = {b: [] for b in options.binaries}
+        for round_ in range(options.runs):
+            if options.idle and not wait_idle():
+                busy_rounds += 1
+            # Every other round in reverse order, so that no binary always runs first.
+            order = options.binaries if round_ % 2 == 0 else options.binaries[::-1]
+            for binary in order:
+                seconds[binary].append(wall_once(binary, args))
+        width = max(len(b) for b in options.binaries)
+        print(f"wall seconds of {options.runs} alternated runs of: {' '.join(args)}")
+        if options.idle:
+            print(f"rounds started on a busy machine (waited a minute): {busy_rounds}")
+        first = seconds[options.binaries[0]]
+        for binary in options.binaries:
+            s = seconds[binary]
+            # The ratio within each round, whose runs are back to back: steadier than the ratio
+            # of the medians when the machine's load drifts between rounds.
+            ratio = statistics.median(b / a for a, b in zip(first, s))
+            print(f"{binary:<{width}}  median {statistics.median(s):7.3f}  min {min(s):7.3f}  "
+                  f"max {max(s):7.3f}  median ratio to the first {ratio:6.3f}")
+        return
+
     values = {b: {f: [] for f in FIELDS} for b in options.binaries}
     for _ in range(options.runs):
+        if options.idle and not wait_idle():
+            busy_rounds += 1
         for binary in options.binaries:
             result = run_once(binary, args)
             for field in FIELDS:
@@ -67,6 +142,8 @@ def main():
                     values[binary][field].append(result[field])
     width = max(len(b) for b in options.binaries)
     print(f"medians of {options.runs} alternated runs of: {' '.join(args)}")
+    if options.idle:
+        print(f"rounds started on a busy machine (waited a minute): {busy_rounds}")
     for binary in options.binaries:
         cells = "  ".join(f"{f} {statistics.median(values[binary][f]):8.3f}" for f in FIELDS
                           if values[binary][f])

@@ -16,6 +16,7 @@ Threads::Threads(int count) : count_(std::max(count, 1)) {
 }
 
 int Threads::slot() const {
+  if (!arena_) return 0;
   const int index = tbb::this_task_arena::current_thread_index();
   return index == tbb::task_arena::not_initialized ? 0 : index;
 }

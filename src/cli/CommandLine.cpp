@@ -176,7 +176,8 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
       ->check(CLI::Range(1, 100000));
   app.add_option("--contact-sheet", options.contactSheet, "tile turntable frames into one PNG");
   options.threads = hardwareThreads();
-  app.add_option("--threads", options.threads, "threads per frame (default: the machine's)")
+  app.add_option("--threads", options.threads,
+                 "threads (default: the machine's); a turntable's frames run at once")
       ->check(CLI::Range(1, kMaxThreads));
   addSceneOptions(app, options.overrides, vectors, options.settings);
   if (!parseArguments(app, argc, argv, out)) return 0;

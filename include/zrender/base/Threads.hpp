@@ -60,9 +60,20 @@ class Threads {
 
   int count() const { return count_; }
   bool parallel() const { return count_ > 1; }
-  // The index of the calling thread among the arena's, 0..count() - 1 (0 outside the arena),
-  // to give each thread its own scratch.
+  // The index of the calling thread among the arena's, 0..count() - 1 (0 outside the arena,
+  // and always 0 with one thread, even on a thread of another arena: a renderer of one thread
+  // drawing a turntable's frame among others), to give each thread its own scratch.
   int slot() const;
+
+  // f() on the arena's threads (tbb's loops inside it use them), or with one thread on the
+  // calling thread; f's exception is rethrown.
+  template <typename F>
+  void execute(const F& f) const {
+    if (arena_)
+      arena_->execute(f);
+    else
+      f();
+  }
 
   // f(i) for every i in [0, n): with one thread, in increasing order on the calling thread;
   // with more, each index a task of the arena's, taken by whichever thread is free (tasks of

@@ -19,7 +19,7 @@ struct RenderOptions {
   bool json = false;
   bool stats = false;
   int turntable = 0;  // frames; 0 = a single image
-  int threads = 1;    // per frame
+  int threads = 1;    // per frame, or for a turntable's frames at once (docs/design.md, Threads)
   std::optional<std::filesystem::path> contactSheet;
   SceneOverrides overrides;
 };
