@@ -113,8 +113,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fs::remove(mtlPath, ec);  // exercises the missing-.mtl warning
   }
 
-  // One thread: the scan, then the parse. Two: side by side, the parse in parts of 64 bytes or
-  // more, and it also reads text that the scan rejects; the outcome must be the same.
+  // One thread: the scan, then the parse. Two: the parse in parts of 64 bytes or more, side by
+  // side; the outcome must be the same.
   const Outcome alone = load(obj, objPath, nullptr);
   static const zrender::Threads two(2);
   const Outcome together = load(obj, objPath, &two);

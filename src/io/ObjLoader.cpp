@@ -344,40 +344,29 @@ Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
     throw InputError(file + ":1: UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
   }
 
-  // The scan checks every statement, tinyobjloader stores them: passes over the text that need
-  // nothing from each other. With threads they run side by side, tinyobjloader's cut into parts
-  // at line ends, all jobs of one loop (a loop nested in a job would keep the thread that
-  // finishes the scan from helping with the parts). The scan then no longer sizes the arrays.
-  // tinyobjloader may read text that the scan rejects: its result is used only when the scan
-  // accepts the text (the fuzz target runs both ways).
-  ObjCounts counts;
+  // The scan checks every statement first, so that tinyobjloader only reads text it accepts (a
+  // rejected text can be slow for it: ASan's strict string checks make its strspn over a line
+  // of 300,000 corners quadratic). With threads, tinyobjloader's pass is then cut into parts at
+  // line ends, parsed side by side and joined.
+  const ObjCounts counts = scanObj(file, text);
+  if (counts.faces == 0) throw InputError(file + ": model has no faces");
   Parsed parsed;
-  const auto scan = [&] {
-    counts = scanObj(file, text);
-    if (counts.faces == 0) throw InputError(file + ": model has no faces");
-  };
   const fs::path folder = path.parent_path();
-  if (!threads || !threads->parallel()) {
-    scan();
+  const std::vector<std::string_view> pieces =
+      threads && threads->parallel()
+          ? cutAtLineEnds(text, size_t(threads->count()) * 4, minPartBytes)
+          : std::vector<std::string_view>{};
+  if (pieces.size() <= 1) {
     parseWithTinyobj(text, file, folder, &counts, parsed);
   } else {
-    const std::vector<std::string_view> pieces =
-        cutAtLineEnds(text, size_t(threads->count()) * 4, minPartBytes);
     std::vector<Parsed> parts(pieces.size());
-    sideBySide(threads, 1 + pieces.size(), [&](size_t job) {
-      if (job == 0) {
-        scan();
-      } else {
-        parseWithTinyobj(pieces[job - 1], file, folder, nullptr, parts[job - 1]);
-      }
-    });
+    sideBySide(threads, pieces.size(),
+               [&](size_t i) { parseWithTinyobj(pieces[i], file, folder, nullptr, parts[i]); });
     // Material statements carry state from one part to the next (the current material, the
     // materials loaded so far): a text with any is parsed in one pass after all.
     bool materials = false;
     for (const Parsed& part : parts) materials = materials || part.builder.sawMaterials;
-    if (parts.size() == 1) {
-      parsed = std::move(parts[0]);
-    } else if (materials) {
+    if (materials) {
       parseWithTinyobj(text, file, folder, &counts, parsed);
     } else {
       joinParts(parts, parsed);

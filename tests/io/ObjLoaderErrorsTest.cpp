@@ -177,9 +177,8 @@ TEST_F(ObjLoaderErrors, EveryInputOfTheObjFuzzCorpusLoadsOrFailsCleanly) {
   EXPECT_GT(files, 5);
 }
 
-// With two threads the scan and the parse run side by side, the parse in parts, and the parse
-// also reads text the scan rejects: every corpus input gives the same mesh, or the same error,
-// and the same warnings.
+// With two threads the parse runs in parts side by side: every corpus input gives the same
+// mesh, or the same error, and the same warnings.
 TEST_F(ObjLoaderErrors, EveryInputOfTheObjFuzzCorpusLoadsTheSameOnTwoThreads) {
   const Threads two(2);
   int files = 0, failures = 0;

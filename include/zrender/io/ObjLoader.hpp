@@ -20,8 +20,8 @@ constexpr uint32_t kMaxFaceCorners = 4096;
 // malformed line, an index out of range (0, past the end, negative before the start), a NaN or
 // infinite coordinate, a face above kMaxFaceCorners, or a model with no faces. A missing .mtl or
 // texture file is a warning. Faces with fewer than 3 corners are kept (they get a face id) and
-// are skipped as degenerate when drawn. With `threads` (more than one), the checks and the
-// parse run side by side.
+// are skipped as degenerate when drawn. With `threads` (more than one), after the checks the
+// parse runs in parts side by side.
 Mesh loadObj(const std::filesystem::path& path, Warnings& warnings,
              const Threads* threads = nullptr);
 
