@@ -1,6 +1,5 @@
 #include "zrender/io/ObjLoader.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -21,7 +20,6 @@
 
 #include <tiny_obj_loader.h>
 
-#include "zrender/base/SideBySide.hpp"
 #include "zrender/io/ObjScanner.hpp"
 
 namespace zrender {
@@ -88,11 +86,6 @@ struct Builder {
   int32_t currentMaterial = -1;
   // Ordinal of the first v / vt / vn statement with a non-finite value (overflow), or npos.
   size_t firstNonFinite[3] = {std::string::npos, std::string::npos, std::string::npos};
-  // For a part of the text (parseInParts): the corner fields resolved from a relative index,
-  // 3 * corner + k for position, texcoord, normal, which the parts before it shift; and
-  // whether a material statement came, which the parts cannot share.
-  std::vector<size_t> relativeFields;
-  bool sawMaterials = false;
 
   void noteFinite(int kind, bool finite, size_t ordinal) {
     if (!finite && firstNonFinite[kind] == std::string::npos) firstNonFinite[kind] = ordinal;
@@ -135,10 +128,6 @@ struct Builder {
       c.position = resolve(indices[i].vertex_index, m.positions.size());
       c.texcoord = resolve(indices[i].texcoord_index, m.texcoords.size());
       c.normal = resolve(indices[i].normal_index, m.normals.size());
-      const int raw[3] = {indices[i].vertex_index, indices[i].texcoord_index,
-                          indices[i].normal_index};
-      for (int k = 0; k < 3; ++k)
-        if (raw[k] < 0) b.relativeFields.push_back(3 * m.corners.size() + size_t(k));
       m.corners.push_back(c);
     }
     m.faceStart.push_back(static_cast<uint32_t>(m.corners.size()));
@@ -148,7 +137,6 @@ struct Builder {
   // Looked up by our own trimmed name: tinyobjloader keeps trailing blanks of a usemtl line.
   static void onUseMaterial(void* self, const char* name, int /*tinyobjId*/) {
     auto& b = *static_cast<Builder*>(self);
-    b.sawMaterials = true;
     const std::string key(trim(name));
     const auto it = b.materialIndex.find(key);
     b.currentMaterial = it == b.materialIndex.end() ? -1 : it->second;
@@ -160,7 +148,6 @@ struct Builder {
   // Called after each mtllib with every material loaded so far.
   static void onMaterials(void* self, const tinyobj::material_t* materials, int count) {
     auto& b = *static_cast<Builder*>(self);
-    b.sawMaterials = true;
     b.materials.assign(materials, materials + count);
     b.materialIndex.clear();
     for (int i = 0; i < count; ++i) {
@@ -214,126 +201,14 @@ std::string readFile(const fs::path& path, const std::string& file) {
   return text;
 }
 
-// tinyobjloader's pass over the text: the statements in a Builder, the .mtl files read.
-struct Parsed {
-  Builder builder;
-  Warnings warnings;  // the .mtl files' (missing ones)
-  bool mtlMissing = false;
-};
-
-// `counts`, when known, sizes the arrays up front.
-void parseWithTinyobj(std::string_view text, const std::string& file, const fs::path& folder,
-                      const ObjCounts* counts, Parsed& parsed) {
-  // The callback API rather than ObjReader/LoadObj, whose shapes cannot hold this mesh: they
-  // store a face's corner count in an unsigned char (faces above 255 corners wrap), drop faces
-  // below 3 corners (shifting every later face id), and split faces into shapes by g/o/usemtl.
-  // The callbacks arrive one per statement in file order, with the corner count as an int.
-  Mesh& mesh = parsed.builder.mesh;
-  if (counts) {
-    mesh.positions.reserve(counts->attributes[0]);
-    mesh.texcoords.reserve(counts->attributes[1]);
-    mesh.normals.reserve(counts->attributes[2]);
-    mesh.corners.reserve(counts->corners);
-    mesh.faceStart.reserve(counts->faces + 1);
-    mesh.faceMaterial.reserve(counts->faces);
-  } else {
-    // As many as the text could hold at most (a statement takes 6 bytes or more, a corner 2):
-    // the arrays never grow, whose copies would each be new memory, which the kernel zeroes
-    // page by page; what is reserved and not written costs no memory.
-    const size_t statements = text.size() / 6 + 1;
-    mesh.positions.reserve(statements);
-    mesh.texcoords.reserve(statements);
-    mesh.normals.reserve(statements);
-    mesh.corners.reserve(text.size() / 2 + 1);
-    mesh.faceStart.reserve(statements + 1);
-    mesh.faceMaterial.reserve(statements);
-  }
-  mesh.faceStart.push_back(0);
-
-  tinyobj::callback_t callbacks;
-  callbacks.vertex_cb = &Builder::onVertex;
-  callbacks.texcoord_cb = &Builder::onTexcoord;
-  callbacks.normal_cb = &Builder::onNormal;
-  callbacks.index_cb = &Builder::onFace;
-  callbacks.usemtl_cb = &Builder::onUseMaterial;
-  callbacks.mtllib_cb = &Builder::onMaterials;
-
-  MtlReader mtlReader(file, folder, parsed.warnings);
-  MemoryBuf buffer(text);
-  std::istream stream(&buffer);
-  std::string tinyWarnings, tinyErrors;  // ours are more precise; these are dropped
-  tinyobj::LoadObjWithCallback(stream, callbacks, &parsed.builder, &mtlReader, &tinyWarnings,
-                               &tinyErrors);
-  parsed.mtlMissing = mtlReader.missing();
-}
-
-// The text cut at line ends into at most `parts` pieces of at least `minBytes` each.
-std::vector<std::string_view> cutAtLineEnds(std::string_view text, size_t parts, size_t minBytes) {
-  std::vector<std::string_view> pieces;
-  const size_t step = std::max(minBytes, text.size() / std::max<size_t>(parts, 1) + 1);
-  while (!text.empty()) {
-    size_t end = text.size();
-    if (text.size() > step) {
-      const size_t newline = text.find('\n', step - 1);
-      if (newline != std::string_view::npos) end = newline + 1;
-    }
-    pieces.push_back(text.substr(0, end));
-    text.remove_prefix(end);
-  }
-  return pieces;
-}
-
-// The parts' statements one after the other, as one pass over the whole text would give them.
-void joinParts(std::vector<Parsed>& parts, Parsed& whole) {
-  Mesh& mesh = whole.builder.mesh;
-  size_t sizes[6] = {};
-  for (const Parsed& part : parts) {
-    const Mesh& m = part.builder.mesh;
-    sizes[0] += m.positions.size(), sizes[1] += m.texcoords.size();
-    sizes[2] += m.normals.size(), sizes[3] += m.corners.size();
-    sizes[4] += m.faceCount(), sizes[5] += part.warnings.size();
-  }
-  mesh.positions.reserve(sizes[0]);
-  mesh.texcoords.reserve(sizes[1]);
-  mesh.normals.reserve(sizes[2]);
-  mesh.corners.reserve(sizes[3]);
-  mesh.faceStart.reserve(sizes[4] + 1);
-  mesh.faceMaterial.reserve(sizes[4]);
-  mesh.faceStart.assign(1, 0);
-  for (Parsed& part : parts) {
-    const Mesh& m = part.builder.mesh;
-    // What the parts before this one hold: where its relative indices count from.
-    const size_t base[3] = {mesh.positions.size(), mesh.texcoords.size(), mesh.normals.size()};
-    for (int k = 0; k < 3; ++k) {
-      const size_t first = part.builder.firstNonFinite[k];
-      if (first != std::string::npos && whole.builder.firstNonFinite[k] == std::string::npos)
-        whole.builder.firstNonFinite[k] = base[k] + first;
-    }
-    const size_t firstCorner = mesh.corners.size();
-    mesh.positions.insert(mesh.positions.end(), m.positions.begin(), m.positions.end());
-    mesh.texcoords.insert(mesh.texcoords.end(), m.texcoords.begin(), m.texcoords.end());
-    mesh.normals.insert(mesh.normals.end(), m.normals.begin(), m.normals.end());
-    mesh.corners.insert(mesh.corners.end(), m.corners.begin(), m.corners.end());
-    for (size_t field : part.builder.relativeFields) {
-      Corner& c = mesh.corners[firstCorner + field / 3];
-      int32_t& index = field % 3 == 0 ? c.position : field % 3 == 1 ? c.texcoord : c.normal;
-      index = int32_t(int64_t(index) + int64_t(base[field % 3]));
-    }
-    for (size_t f = 1; f < m.faceStart.size(); ++f)
-      mesh.faceStart.push_back(uint32_t(firstCorner + m.faceStart[f]));
-    mesh.faceMaterial.insert(mesh.faceMaterial.end(), m.faceMaterial.begin(), m.faceMaterial.end());
-    whole.warnings.insert(whole.warnings.end(), part.warnings.begin(), part.warnings.end());
-  }
-}
-
 }  // namespace
 
-Mesh loadObj(const std::filesystem::path& path, Warnings& warnings, const Threads* threads) {
-  return loadObjFromText(readFile(path, path.string()), path, warnings, threads);
+Mesh loadObj(const std::filesystem::path& path, Warnings& warnings) {
+  return loadObjFromText(readFile(path, path.string()), path, warnings);
 }
 
-Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path, Warnings& warnings,
-                     const Threads* threads, size_t minPartBytes) {
+Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
+                     Warnings& warnings) {
   const std::string file = path.string();
   std::string_view text(data);
   // tinyobjloader does not skip a UTF-8 byte order mark; the first statement would be lost.
@@ -344,37 +219,37 @@ Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
     throw InputError(file + ":1: UTF-16 text is not supported (save the file as UTF-8 or ASCII)");
   }
 
-  // The scan checks every statement first, so that tinyobjloader only reads text it accepts (a
-  // rejected text can be slow for it: ASan's strict string checks make its strspn over a line
-  // of 300,000 corners quadratic). With threads, tinyobjloader's pass is then cut into parts at
-  // line ends, parsed side by side and joined.
   const ObjCounts counts = scanObj(file, text);
   if (counts.faces == 0) throw InputError(file + ": model has no faces");
-  Parsed parsed;
-  const fs::path folder = path.parent_path();
-  const std::vector<std::string_view> pieces =
-      threads && threads->parallel()
-          ? cutAtLineEnds(text, size_t(threads->count()) * 4, minPartBytes)
-          : std::vector<std::string_view>{};
-  if (pieces.size() <= 1) {
-    parseWithTinyobj(text, file, folder, &counts, parsed);
-  } else {
-    std::vector<Parsed> parts(pieces.size());
-    sideBySide(threads, pieces.size(),
-               [&](size_t i) { parseWithTinyobj(pieces[i], file, folder, nullptr, parts[i]); });
-    // Material statements carry state from one part to the next (the current material, the
-    // materials loaded so far): a text with any is parsed in one pass after all.
-    bool materials = false;
-    for (const Parsed& part : parts) materials = materials || part.builder.sawMaterials;
-    if (materials) {
-      parseWithTinyobj(text, file, folder, &counts, parsed);
-    } else {
-      joinParts(parts, parsed);
-    }
-  }
-  warnings.insert(warnings.end(), parsed.warnings.begin(), parsed.warnings.end());
-  Builder& builder = parsed.builder;
+
+  // The callback API rather than ObjReader/LoadObj, whose shapes cannot hold this mesh: they
+  // store a face's corner count in an unsigned char (faces above 255 corners wrap), drop faces
+  // below 3 corners (shifting every later face id), and split faces into shapes by g/o/usemtl.
+  // The callbacks arrive one per statement in file order, with the corner count as an int.
+  Builder builder;
   Mesh& mesh = builder.mesh;
+  mesh.positions.reserve(counts.attributes[0]);
+  mesh.texcoords.reserve(counts.attributes[1]);
+  mesh.normals.reserve(counts.attributes[2]);
+  mesh.corners.reserve(counts.corners);
+  mesh.faceStart.reserve(counts.faces + 1);
+  mesh.faceMaterial.reserve(counts.faces);
+  mesh.faceStart.push_back(0);
+
+  tinyobj::callback_t callbacks;
+  callbacks.vertex_cb = &Builder::onVertex;
+  callbacks.texcoord_cb = &Builder::onTexcoord;
+  callbacks.normal_cb = &Builder::onNormal;
+  callbacks.index_cb = &Builder::onFace;
+  callbacks.usemtl_cb = &Builder::onUseMaterial;
+  callbacks.mtllib_cb = &Builder::onMaterials;
+
+  const fs::path folder = path.parent_path();
+  MtlReader mtlReader(file, folder, warnings);
+  MemoryBuf buffer(text);
+  std::istream stream(&buffer);
+  std::string tinyWarnings, tinyErrors;  // ours are more precise; these are dropped
+  tinyobj::LoadObjWithCallback(stream, callbacks, &builder, &mtlReader, &tinyWarnings, &tinyErrors);
 
   // The scan and tinyobjloader split lines and match statements the same way; if they ever
   // disagreed, the indices checked by the scan would not be the ones stored.
@@ -404,7 +279,7 @@ Mesh loadObjFromText(const std::string& data, const std::filesystem::path& path,
   }
 
   // After a missing .mtl every usemtl would be unknown; that file's warning says enough.
-  if (!parsed.mtlMissing) {
+  if (!mtlReader.missing()) {
     for (const std::string& name : builder.unknownMaterials) {
       warnings.push_back(file + ": material '" + quoteName(name) + "' not found");
     }

@@ -37,7 +37,7 @@ Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads
   std::shared_ptr<const Mesh> mesh;
   cv::Mat texture;
   if (!settings.texture) {  // the texture may be named by the model's materials
-    mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads));
+    mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
     texture = loadTexture(settings, *mesh, warnings);
     return makeScene(settings, std::move(mesh), std::move(texture));
   }
@@ -45,7 +45,7 @@ Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads
   Warnings textureWarnings;
   sideBySide(threads, 2, [&](size_t job) {
     if (job == 0) {
-      mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads));
+      mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
     } else {
       texture = loadTexture(settings, Mesh(), textureWarnings);
     }

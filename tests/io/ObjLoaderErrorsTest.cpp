@@ -12,7 +12,6 @@
 #include "support/ObjLoaderFixture.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
-#include "zrender/base/Threads.hpp"
 #include "zrender/io/ObjLoader.hpp"
 #include "zrender/scene/Mesh.hpp"
 
@@ -175,48 +174,6 @@ TEST_F(ObjLoaderErrors, EveryInputOfTheObjFuzzCorpusLoadsOrFailsCleanly) {
     ++files;
   }
   EXPECT_GT(files, 5);
-}
-
-// With two threads the parse runs in parts side by side: every corpus input gives the same
-// mesh, or the same error, and the same warnings.
-TEST_F(ObjLoaderErrors, EveryInputOfTheObjFuzzCorpusLoadsTheSameOnTwoThreads) {
-  const Threads two(2);
-  int files = 0, failures = 0;
-  for (const auto& entry : fs::directory_iterator(ZRENDER_SOURCE_DIR "/fuzz/corpus/obj")) {
-    SCOPED_TRACE(entry.path().filename().string());
-    const std::string bytes = test::readFile(entry.path().string());
-    const std::string obj = bytes.substr(0, bytes.find("\n#%MTL\n"));
-    Mesh meshes[2];
-    std::string errors[2];
-    Warnings warnings[2];
-    for (int k = 0; k < 2; ++k) {
-      try {
-        // Parts of 16 bytes or more: a few lines each, so the parts meet mid-model.
-        meshes[k] =
-            loadObjFromText(obj, dir_ / "case.obj", warnings[k], k == 0 ? nullptr : &two, 16);
-      } catch (const InputError& e) {
-        errors[k] = e.what();
-      }
-    }
-    EXPECT_EQ(errors[0], errors[1]);
-    EXPECT_EQ(warnings[0], warnings[1]);
-    EXPECT_EQ(meshes[0].positions, meshes[1].positions);
-    EXPECT_EQ(meshes[0].texcoords, meshes[1].texcoords);
-    EXPECT_EQ(meshes[0].normals, meshes[1].normals);
-    EXPECT_EQ(meshes[0].faceStart, meshes[1].faceStart);
-    EXPECT_EQ(meshes[0].faceMaterial, meshes[1].faceMaterial);
-    ASSERT_EQ(meshes[0].corners.size(), meshes[1].corners.size());
-    for (size_t i = 0; i < meshes[0].corners.size(); ++i) {
-      const Corner &a = meshes[0].corners[i], &b = meshes[1].corners[i];
-      EXPECT_TRUE(a.position == b.position && a.texcoord == b.texcoord && a.normal == b.normal)
-          << "corner " << i;
-    }
-    failures += !errors[0].empty();
-    ++files;
-  }
-  EXPECT_GT(files, 5);
-  EXPECT_GT(failures, 0);      // errors compared,
-  EXPECT_LT(failures, files);  // and meshes
 }
 
 }  // namespace

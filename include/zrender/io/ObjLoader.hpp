@@ -1,6 +1,5 @@
 #pragma once
 
-#include <cstddef>
 #include <filesystem>
 #include <string>
 
@@ -8,8 +7,6 @@
 #include "zrender/scene/Mesh.hpp"
 
 namespace zrender {
-
-class Threads;
 
 // Largest polygon accepted, in corners. Window-space ear clipping is quadratic in the corner
 // count, so larger faces are refused with an InputError instead of stalling.
@@ -20,21 +17,13 @@ constexpr uint32_t kMaxFaceCorners = 4096;
 // malformed line, an index out of range (0, past the end, negative before the start), a NaN or
 // infinite coordinate, a face above kMaxFaceCorners, or a model with no faces. A missing .mtl or
 // texture file is a warning. Faces with fewer than 3 corners are kept (they get a face id) and
-// are skipped as degenerate when drawn. With `threads` (more than one), after the checks the
-// parse runs in parts side by side.
-Mesh loadObj(const std::filesystem::path& path, Warnings& warnings,
-             const Threads* threads = nullptr);
-
-// With threads, tinyobjloader parses a text of more than this many bytes in parts, each of at
-// least this many (a part's parse has a fixed cost: its own callbacks and arrays).
-constexpr size_t kObjMinPartBytes = size_t(1) << 18;
+// are skipped as degenerate when drawn.
+Mesh loadObj(const std::filesystem::path& path, Warnings& warnings);
 
 // The same loader on OBJ text already in memory (the fuzz targets use it): `nameForMessages`
 // starts every message, and the .mtl files named by mtllib are looked up beside it. loadObj is
-// this function after reading the file. `minPartBytes`: tests and the fuzz target make it small
-// so that small texts are parsed in parts too.
+// this function after reading the file.
 Mesh loadObjFromText(const std::string& text, const std::filesystem::path& nameForMessages,
-                     Warnings& warnings, const Threads* threads = nullptr,
-                     size_t minPartBytes = kObjMinPartBytes);
+                     Warnings& warnings);
 
 }  // namespace zrender
