@@ -36,21 +36,21 @@ cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& w
 Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads* threads) {
   std::shared_ptr<const Mesh> mesh;
   cv::Mat texture;
-  if (!settings.texture) {  // the texture may be named by the model's materials
+  if (settings.texture) {
+    // Warnings in the order of loading one after the other: the model's, then the texture's.
+    Warnings textureWarnings;
+    sideBySide(threads, 2, [&](size_t job) {
+      if (job == 0) {
+        mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
+      } else {
+        texture = loadTexture(settings, Mesh(), textureWarnings);
+      }
+    });
+    warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
+  } else {  // the texture may be named by the model's materials: after the model
     mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
     texture = loadTexture(settings, *mesh, warnings);
-    return makeScene(settings, std::move(mesh), std::move(texture));
   }
-  // Warnings in the order of loading one after the other: the model's, then the texture's.
-  Warnings textureWarnings;
-  sideBySide(threads, 2, [&](size_t job) {
-    if (job == 0) {
-      mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
-    } else {
-      texture = loadTexture(settings, Mesh(), textureWarnings);
-    }
-  });
-  warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
   return makeScene(settings, std::move(mesh), std::move(texture));
 }
 

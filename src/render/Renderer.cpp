@@ -46,11 +46,8 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
       // New memory is zeroed by the kernel at its first write, a huge page (2 MiB) at a time:
       // written first in one contiguous part per thread, the pages are zeroed in parallel, not
       // one after another as the bands of the algorithms, a few rows each, would reach them.
-      const size_t parts = size_t(threads_.count()), n = buffer_.size();
-      DepthKey* keys = buffer_.data();
-      threads_.forEach(parts, [&](size_t i) {
-        std::fill(keys + n * i / parts, keys + n * (i + 1) / parts, kClearKey);
-      });
+      const size_t parts = size_t(threads_.count());
+      threads_.forEach(parts, [&](size_t i) { buffer_.clearPart(i, parts); });
     }
     {
       ScopedTimer shading(shadeMs);

@@ -30,6 +30,12 @@ class FrameBuffer {
     return fresh;
   }
   void clear() { std::fill(keys_.begin(), keys_.end(), kClearKey); }
+  // Part `part` of `parts` equal, contiguous parts of the samples, cleared.
+  void clearPart(size_t part, size_t parts) {
+    const size_t n = size();
+    std::fill(keys_.begin() + std::ptrdiff_t(n * part / parts),
+              keys_.begin() + std::ptrdiff_t(n * (part + 1) / parts), kClearKey);
+  }
 
   int width() const { return width_; }    // samples
   int height() const { return height_; }  // samples
