@@ -33,6 +33,7 @@ Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
   scene.settings = settings;
   scene.mesh = std::move(mesh);
   scene.instanceOffsets = gridOffsets(settings);
+  scene.meshBox = boundingBox(scene.mesh->positions);
 
   // Bounding sphere: centre of the bounding box of all instances, radius to the farthest
   // vertex. Instances only translate, so the extreme instances are the corners of the grid.

@@ -5,6 +5,7 @@
 
 #include "zrender/raster/RowBands.hpp"
 #include "zrender/raster/TriangleFill.hpp"
+#include "zrender/scene/ScreenRows.hpp"
 
 namespace zrender {
 
@@ -95,11 +96,6 @@ class BandsFilter : public TriangleFilter {
 
 }  // namespace
 
-FaceBatches HierarchicalAlgorithm::prepare(const Scene& scene) {
-  meshCentre_ = boundingBox(scene.mesh->positions).centre();
-  return FaceBatches();
-}
-
 void HierarchicalAlgorithm::orderInstances(const FrameInput& input) {
   const Scene& scene = input.scene;
   // Nearest instance first (by the centre of its box), which fills the pyramid with what hides
@@ -109,7 +105,8 @@ void HierarchicalAlgorithm::orderInstances(const FrameInput& input) {
   std::vector<double> distance(instances_.size());
   for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
     const Mat4 model = scene.modelMatrix(k);
-    const Vec4 c = model * Vec4(meshCentre_[0], meshCentre_[1], meshCentre_[2], 1.0);
+    const Vec3 centre = scene.meshBox.centre();
+    const Vec4 c = model * Vec4(centre[0], centre[1], centre[2], 1.0);
     const Vec3 d(c[0] - eye[0], c[1] - eye[1], c[2] - eye[2]);
     distance[k] = d.dot(d);
     instances_[k] = k;
@@ -154,7 +151,10 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
 void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const Threads& threads = *input.threads;
   FrameGeometry& g = input.geometry;
-  const RowBands bands(fb.height(), threads.count() * kBandsPerThread, DepthPyramid::kTileSize);
+  // The bands share out the rows the instances cover, where the work is.
+  const RowSpan busy = screenRows(input.scene, input.camera, fb.height());
+  const RowBands bands(fb.height(), threads.count() * kBandsPerThread, DepthPyramid::kTileSize,
+                       busy.begin, busy.end);
   bandRasterizers_.resize(size_t(bands.count()));
   for (int b = 0; b < bands.count(); ++b)
     bandRasterizers_[size_t(b)].begin(fb, bands.rowBegin(b), bands.rowEnd(b));

@@ -21,6 +21,7 @@ struct Scene {
   cv::Mat texture;             // CV_8UC3 (BGR) or empty
   Vec3 boundsCentre{0, 0, 0};  // bounding sphere of all instances after rotation
   double boundsRadius = 0.0;
+  Box3 meshBox;  // the mesh's box, model space (before the rotation)
 
   uint32_t instanceCount() const { return uint32_t(instanceOffsets.size()); }
   uint32_t faceCount() const { return uint32_t(mesh->faceCount()) * instanceCount(); }

@@ -24,7 +24,6 @@ namespace zrender {
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }
-  FaceBatches prepare(const Scene& scene) override;
   void render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) override;
 
  private:
@@ -37,7 +36,6 @@ class HierarchicalAlgorithm : public VisibilityAlgorithm {
   std::vector<HzbRasterizer> bandRasterizers_;  // several threads: each band's
   BandLists bandTriangles_;                     // an instance's triangles in each band
   std::vector<RenderStats> bandStats_, threadStats_;
-  Vec3 meshCentre_{0, 0, 0};         // model space: the centre of the mesh's bounding box
   std::vector<uint32_t> instances_;  // this frame's instance order, nearest first
 };
 
