@@ -21,4 +21,4 @@ ninja -C "$build"
 # library, whose own synchronisation ThreadSanitizer cannot see.
 export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:suppressions=$root/tools/tsan.supp}
 cd "$build"
-ctest --output-on-failure -j "$jobs" -R 'ThreadCounts|ThreadsOption|TurntableThreads|PngWriter|SideBySide|SceneFiles' "$@"
+ctest --output-on-failure -j "$jobs" -R 'ThreadCounts|ThreadsOption|TurntableThreads|PngWriter|SideBySide|SceneFiles|FrameMemory' "$@"

@@ -9,12 +9,14 @@
 
 #include "zrender/base/Error.hpp"
 #include "zrender/base/InOrderPipeline.hpp"
+#include "zrender/base/SideBySide.hpp"
 #include "zrender/base/Threads.hpp"
 #include "zrender/cli/Report.hpp"
 #include "zrender/io/ContactSheet.hpp"
 #include "zrender/io/ImageCodecs.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/io/SceneFiles.hpp"
+#include "zrender/render/FrameMemory.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
 
@@ -99,6 +101,9 @@ FrameReport renderRepeated(Renderer& renderer, const Camera& camera, int repeat)
   return report;
 }
 
+// The most frame memory made while the model loads, bytes (an 1800 x 1800 frame: 36 MB).
+constexpr double kMemoryAheadBytes = 256.0 * (1 << 20);
+
 }  // namespace
 
 int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err) {
@@ -133,14 +138,34 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
 
   const double loadStart = nowMs();
   const Threads threads(options.threads);  // the loading's, then the frames'
-  const Scene scene = loadScene(settings, warnings, &threads);
+  // A turntable with at least as many frames as threads renders whole frames at once, each on
+  // one thread by a renderer of one thread, rather than one frame after another split over the
+  // threads: no slower, and up to a fifth faster where a frame splits worst (measured:
+  // docs/performance.md, Turntables on several threads).
+  const int frames = turntable ? options.turntable : 1;
+  const bool framesAtOnce = turntable && threads.parallel() && frames >= threads.count();
+  // One renderer, on several threads: its buffers are written once while the model loads, on
+  // a thread the loading leaves idle, instead of at the first frame (docs/performance.md,
+  // First touch). Not huge ones, which a model that fails to load would keep waiting.
+  const int scale = sampleScaleOf(settings.msaa);
+  const double frameBytes = double(settings.width) * double(settings.height) *
+                            (double(sizeof(DepthKey)) * scale * scale + 3.0);
+  const bool memoryAhead = threads.parallel() && !framesAtOnce && frameBytes <= kMemoryAheadBytes;
+  Scene loaded;
+  FrameMemory memory;
+  sideBySide(&threads, memoryAhead ? 2 : 1, [&](size_t job) {
+    if (job == 0)
+      loaded = loadScene(settings, warnings, &threads);
+    else
+      memory = firstTouchedFrameMemory(settings.width, settings.height, settings.msaa);
+  });
+  const Scene& scene = loaded;
   const double loadMs = nowMs() - loadStart;
   flushWarnings();
 
   // Every output is checked before the first frame, so that a run that fails writes nothing:
   // not the color image before a --depth that cannot be written, nor the first frames of a
   // turntable whose tenth is blocked. After the loading, whose errors are the common ones.
-  const int frames = turntable ? options.turntable : 1;
   if (turntable && !isVideo(colorPath)) {
     for (int frame = 0; frame < frames; ++frame)
       checkWritable(framePath(colorPath.string(), frame));
@@ -150,13 +175,9 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   for (const auto& path : {options.depth, options.ids, options.contactSheet})
     if (path) checkWritable(*path);
 
-  // A turntable with at least as many frames as threads renders whole frames at once, each on
-  // one thread by a renderer of one thread, rather than one frame after another split over the
-  // threads: no slower, and up to a fifth faster where a frame splits worst (measured:
-  // docs/performance.md, Turntables on several threads). One renderer per frame in flight,
-  // reused by the frames that follow (and its buffers with them); each is built by its first
-  // frame, on that frame's thread, so that their prepares (an octree each) run at once too.
-  const bool framesAtOnce = turntable && threads.parallel() && frames >= threads.count();
+  // Frames at once: one renderer per frame in flight, reused by the frames that follow (and
+  // its buffers with them); each is built by its first frame, on that frame's thread, so that
+  // their prepares (an octree each) run at once too.
   const size_t slots = framesAtOnce ? size_t(threads.count()) : 1;
   const int rendererThreads = framesAtOnce ? 1 : threads.count();
   std::vector<std::unique_ptr<Renderer>> renderers(slots);
@@ -186,8 +207,10 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
 
   // Renders a frame and writes its own files: on any thread, several frames at once.
   const auto render = [&](size_t frame, size_t slot) {
-    if (!renderers[slot])
+    if (!renderers[slot]) {
       renderers[slot] = std::make_unique<Renderer>(scene, options.algorithm, rendererThreads);
+      if (memoryAhead) renderers[slot]->adoptMemory(std::move(memory));
+    }
     Renderer& renderer = *renderers[slot];
     const Camera camera =
         turntable ? turntableCamera(baseCamera, 360.0 * frame / frames) : baseCamera;

@@ -19,7 +19,7 @@ Renderer::Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algo
       threads_(threads),
       algorithm_(std::move(algorithm)),
       shader_(scene, scene.settings.shading),
-      sampleScale_(scene.settings.msaa == 4 ? 2 : 1) {
+      sampleScale_(sampleScaleOf(scene.settings.msaa)) {
   ScopedTimer timer(prepareMs_);
   const FaceBatches batches = algorithm_->prepare(scene);
   transformer_ =
@@ -42,16 +42,18 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
   {
     ScopedTimer timer(frameMs);
     source_->beginFrame(camera);
-    if (buffer_.resize(geometry_.width, geometry_.height) && threads_.parallel()) {
+    FrameBuffer& buffer = memory_.buffer;
+    if (buffer.resize(geometry_.width, geometry_.height) && threads_.parallel()) {
       // New memory is zeroed by the kernel at its first write, a huge page (2 MiB) at a time:
       // written first in one contiguous part per thread, the pages are zeroed in parallel, not
       // one after another as the bands of the algorithms, a few rows each, would reach them.
       const size_t parts = size_t(threads_.count());
-      threads_.forEach(parts, [&](size_t i) { buffer_.clearPart(i, parts); });
+      threads_.forEach(parts, [&](size_t i) { buffer.clearPart(i, parts); });
     }
+    memory_.color.resize(camera.width, camera.height);  // the shader writes every pixel
     {
       ScopedTimer shading(shadeMs);
-      shader_.begin(buffer_, camera, sampleScale_, color_,
+      shader_.begin(buffer, camera, sampleScale_, memory_.color.mat(),
                     algorithm_->gathersFaces(threads_.parallel()) ? &geometry_ : nullptr);
     }
     // Rows finished by the algorithm are shaded while their keys are still in cache; that time
@@ -75,7 +77,7 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
         shader_.rowsFinal(rows);
       };
     }
-    algorithm_->render(input, buffer_, stats_);
+    algorithm_->render(input, buffer, stats_);
     ScopedTimer shading(shadeMs);
     shader_.finish(threads_);
   }

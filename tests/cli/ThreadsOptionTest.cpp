@@ -43,6 +43,25 @@ TEST(ThreadsOption, RenderReportsThreadsAndWritesTheOneThreadImage) {
   EXPECT_EQ(three.err, "");  // oneTBB says nothing about more threads than cores
 }
 
+// With several threads the buffers are made while the model loads (FrameMemory): the files
+// of one thread still, MSAA, depth and ids included.
+TEST(ThreadsOption, BuffersMadeWhileLoadingGiveTheOneThreadFiles) {
+  TempDir dir;
+  dir.write("sq.obj", kSquareObj);
+  dir.write("settings.json", settingsFor("sq.obj", R"(, "msaa": 4)", "48"));
+  for (const char* threads : {"1", "2"}) {
+    const std::string t(threads);
+    const auto r = runZrender({"sq", "--threads", t, "-o", dir.file(t + ".png"), "--depth",
+                               dir.file(t + ".tiff"), "--ids", dir.file(t + "-ids.png")},
+                              dir.path);
+    ASSERT_EQ(r.status, 0) << r.err;
+  }
+  for (const char* name : {".png", ".tiff", "-ids.png"})
+    EXPECT_EQ(test::readFile(dir.file(std::string("1") + name)),
+              test::readFile(dir.file(std::string("2") + name)))
+        << name;
+}
+
 TEST(ThreadsOption, BenchWithThreadsAddsTheSpeedUpOverOneThread) {
   TempDir dir;
   dir.write("sq.obj", kSquareObj);

@@ -11,6 +11,7 @@
 #include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/raster/RenderStats.hpp"
+#include "zrender/render/FrameMemory.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Scene.hpp"
 #include "zrender/shading/Shader.hpp"
@@ -47,6 +48,9 @@ class Renderer {
   Renderer(const Scene& scene, std::unique_ptr<VisibilityAlgorithm> algorithm,
            const SourceWrapper& wrap = nullptr, int threads = 1);
 
+  // Buffers made ahead (firstTouchedFrameMemory), for the frames to come: used as they are when
+  // a frame has their size.
+  void adoptMemory(FrameMemory&& memory) { memory_ = std::move(memory); }
   // Renders one frame; the results stay valid until the next call.
   FrameTimings renderFrame(const Camera& camera);
 
@@ -55,8 +59,8 @@ class Renderer {
   // The threads themselves, for work on the frame after it is rendered (encoding its image).
   const Threads& threadPool() const { return threads_; }
   int sampleScale() const { return sampleScale_; }
-  const FrameBuffer& buffer() const { return buffer_; }
-  const cv::Mat& color() const { return color_; }
+  const FrameBuffer& buffer() const { return memory_.buffer; }
+  const cv::Mat& color() const { return memory_.color.mat(); }
   const RenderStats& stats() const { return stats_; }
   // The faces the last frame transformed and kept (algorithms that cull early keep fewer);
   // their triangles only where the algorithm keeps them (not the octree: FrameInput).
@@ -73,10 +77,9 @@ class Renderer {
   std::unique_ptr<FaceTransformer> transformer_;
   std::unique_ptr<GeometrySource> wrapper_;
   GeometrySource* source_ = nullptr;  // the wrapper, else the transformer
-  FrameBuffer buffer_;
+  FrameMemory memory_;
   FrameGeometry geometry_;
   std::vector<double> bandShadeMs_;  // per thread: shading inside the algorithm's tasks
-  cv::Mat color_;
   RenderStats stats_;
 };
 
