@@ -45,8 +45,9 @@ inline int sampleScaleOf(int msaa) {
 
 // Buffers for frames of `width` x `height` pixels with `msaa` samples per pixel, every byte
 // written once: made on another thread while the model loads and given to the renderer
-// (Renderer::adoptMemory), they spare its first frame the kernel's zeroing of new pages
-// (0.1 to 0.7 ms per MB on this machine; the key buffer of a 1800 x 1800 frame is 26 MB).
+// (Renderer::adoptMemory), they spare its first frame the kernel's zeroing of new pages (the
+// key buffer of a 1800 x 1800 frame is 26 MB; what a MB costs: docs/performance.md, The
+// machine's two processors).
 FrameMemory firstTouchedFrameMemory(int width, int height, int msaa);
 
 }  // namespace zrender
