@@ -40,57 +40,75 @@ bool faceRows(const FrameGeometry& g, uint32_t f, int height, int& first, int& l
   return first <= last;
 }
 
-void PolygonTables::build(const FrameGeometry& g, int width, int height, int bandBegin, int rowEnd,
+void PolygonTables::build(const FrameGeometry& g, int width, int height, int rowBegin, int rowEnd,
                           const uint32_t* faces, size_t count) {
-  height = std::max(height, 0);
-  rowEnd = std::min(rowEnd, height);
+  begin(height, rowBegin, rowEnd);
+  if (width > 0 && rowEnd_ > rowBegin)
+    for (size_t i = 0; i < count; ++i) classify(g, faces ? faces[i] : uint32_t(i), width);
+  sort();
+}
+
+void PolygonTables::build(const std::vector<const FrameGeometry*>& parts, int width, int height,
+                          int rowBegin, int rowEnd, const PartFace* faces, size_t count) {
+  begin(height, rowBegin, rowEnd);
+  if (width > 0 && rowEnd_ > rowBegin)
+    for (size_t i = 0; i < count; ++i) classify(*parts[faces[i].part], faces[i].face, width);
+  sort();
+}
+
+void PolygonTables::begin(int height, int bandBegin, int rowEnd) {
+  height_ = std::max(height, 0);
+  rowEnd_ = std::min(rowEnd, height_);
   rowBegin = bandBegin;
-  const int rows = std::max(rowEnd - rowBegin, 0);
   unsortedPolygons_.clear();
   unsortedEdges_.clear();
   triangleCount = 0;
-  polygonsEnding.assign(size_t(rows), 0);
-  for (size_t i = 0; i < count && width > 0 && rows > 0; ++i) {
-    const uint32_t f = faces ? faces[i] : uint32_t(i);
-    const ScreenFace& face = g.faces[f];
-    const FixedPoint* v = g.vertices.data() + face.firstVertex;
-    const uint32_t n = face.vertexCount;
-    // Horizontal extent first: a sample is covered only if its centre lies in [minX, maxX).
-    int32_t minX = v[0].x, maxX = v[0].x;
-    for (uint32_t k = 1; k < n; ++k) {
-      minX = std::min(minX, v[k].x);
-      maxX = std::max(maxX, v[k].x);
-    }
-    if (firstSampleAtOrAfter(minX) > width - 1 || lastSampleAtOrBefore(maxX) < 0) continue;
+  polygonsEnding.assign(size_t(std::max(rowEnd_ - rowBegin, 0)), 0);
+}
 
-    const uint32_t polygon = uint32_t(unsortedPolygons_.size());
-    const uint32_t edgeBegin = uint32_t(unsortedEdges_.size());
-    int32_t topRow = rowEnd, bottomRow = -1, imageTop = height;
-    for (uint32_t k = 0; k < n; ++k) {
-      const FixedPoint& a = v[k];
-      const FixedPoint& b = v[k + 1 == n ? 0 : k + 1];
-      if (a.y == b.y) continue;  // horizontal edges are never active
-      const FixedPoint& top = a.y < b.y ? a : b;
-      const FixedPoint& bottom = a.y < b.y ? b : a;
-      // Active rows: centre in [top.y, bottom.y), i.e. centre <= bottom.y - 1.
-      const int32_t imageFirst = std::max(firstSampleAtOrAfter(top.y), 0);
-      const int32_t imageLast = std::min(lastSampleAtOrBefore(int64_t(bottom.y) - 1), height - 1);
-      if (imageFirst <= imageLast) imageTop = std::min(imageTop, imageFirst);
-      const int32_t first = std::max(imageFirst, rowBegin);
-      const int32_t last = std::min(imageLast, rowEnd - 1);
-      if (first > last) continue;
-      unsortedEdges_.push_back(ClassifiedEdge{top, bottom, first, last, polygon});
-      topRow = std::min(topRow, first);
-      bottomRow = std::max(bottomRow, last);
-    }
-    const uint32_t edgeCount = uint32_t(unsortedEdges_.size()) - edgeBegin;
-    if (edgeCount == 0) continue;
-    unsortedPolygons_.push_back(ClassifiedPolygon{g.triangles[face.firstTriangle].plane, face.id,
-                                                  topRow, bottomRow, 0, edgeCount});
-    ++polygonsEnding[size_t(bottomRow - rowBegin)];
-    if (imageTop >= rowBegin) triangleCount += face.triangleCount;
+void PolygonTables::classify(const FrameGeometry& g, uint32_t f, int width) {
+  const int height = height_, rowEnd = rowEnd_;
+  const ScreenFace& face = g.faces[f];
+  const FixedPoint* v = g.vertices.data() + face.firstVertex;
+  const uint32_t n = face.vertexCount;
+  // Horizontal extent first: a sample is covered only if its centre lies in [minX, maxX).
+  int32_t minX = v[0].x, maxX = v[0].x;
+  for (uint32_t k = 1; k < n; ++k) {
+    minX = std::min(minX, v[k].x);
+    maxX = std::max(maxX, v[k].x);
   }
+  if (firstSampleAtOrAfter(minX) > width - 1 || lastSampleAtOrBefore(maxX) < 0) return;
 
+  const uint32_t polygon = uint32_t(unsortedPolygons_.size());
+  const uint32_t edgeBegin = uint32_t(unsortedEdges_.size());
+  int32_t topRow = rowEnd, bottomRow = -1, imageTop = height;
+  for (uint32_t k = 0; k < n; ++k) {
+    const FixedPoint& a = v[k];
+    const FixedPoint& b = v[k + 1 == n ? 0 : k + 1];
+    if (a.y == b.y) continue;  // horizontal edges are never active
+    const FixedPoint& top = a.y < b.y ? a : b;
+    const FixedPoint& bottom = a.y < b.y ? b : a;
+    // Active rows: centre in [top.y, bottom.y), i.e. centre <= bottom.y - 1.
+    const int32_t imageFirst = std::max(firstSampleAtOrAfter(top.y), 0);
+    const int32_t imageLast = std::min(lastSampleAtOrBefore(int64_t(bottom.y) - 1), height - 1);
+    if (imageFirst <= imageLast) imageTop = std::min(imageTop, imageFirst);
+    const int32_t first = std::max(imageFirst, rowBegin);
+    const int32_t last = std::min(imageLast, rowEnd - 1);
+    if (first > last) continue;
+    unsortedEdges_.push_back(ClassifiedEdge{top, bottom, first, last, polygon});
+    topRow = std::min(topRow, first);
+    bottomRow = std::max(bottomRow, last);
+  }
+  const uint32_t edgeCount = uint32_t(unsortedEdges_.size()) - edgeBegin;
+  if (edgeCount == 0) return;
+  unsortedPolygons_.push_back(ClassifiedPolygon{g.triangles[face.firstTriangle].plane, face.id,
+                                                topRow, bottomRow, 0, edgeCount});
+  ++polygonsEnding[size_t(bottomRow - rowBegin)];
+  if (imageTop >= rowBegin) triangleCount += face.triangleCount;
+}
+
+void PolygonTables::sort() {
+  const int rows = std::max(rowEnd_ - rowBegin, 0);
   // CPT: polygons by top row; each gets its slots in the edge pool in that order.
   newIndex_.resize(unsortedPolygons_.size());
   sortByRow(

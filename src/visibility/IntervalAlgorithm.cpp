@@ -23,10 +23,10 @@ inline DepthKey capped(DepthKey k) {
 }  // namespace
 
 void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
-  input.source.pullAll(input.geometry);
-  const FrameGeometry& g = input.geometry;
   const int width = fb.width(), height = fb.height();
   if (!input.parallel()) {
+    input.source.pullAll(input.geometry);
+    const FrameGeometry& g = input.geometry;
     whole_.tables_.build(g, width, height);
     stats.trianglesRasterized += whole_.tables_.triangleCount;
     whole_.drawRows(height, input, fb, stats);

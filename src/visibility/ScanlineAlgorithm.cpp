@@ -7,10 +7,10 @@
 namespace zrender {
 
 void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
-  input.source.pullAll(input.geometry);
-  const FrameGeometry& g = input.geometry;
   const int width = fb.width(), height = fb.height();
   if (!input.parallel()) {
+    input.source.pullAll(input.geometry);
+    const FrameGeometry& g = input.geometry;
     whole_.tables.build(g, width, height);
     stats.trianglesRasterized += whole_.tables.triangleCount;
     drawRows(whole_, height, input, fb, stats);

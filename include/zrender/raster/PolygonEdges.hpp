@@ -72,6 +72,12 @@ struct ClassifiedPolygon {
 // Classified polygon table (CPT) and classified edge table (CET) of one frame, bucketed by top
 // row with counting sorts and stored in that order, so that the row loops walk memory forward.
 // Vectors are kept between frames so that building allocates only on growth.
+// Face `face` of part `part` of a frame's geometry in parts.
+struct PartFace {
+  uint32_t part;
+  uint32_t face;
+};
+
 class PolygonTables {
  public:
   // Classifies every face of `g` against an image of width x height samples. Faces that cover
@@ -86,6 +92,10 @@ class PolygonTables {
   // the faces whose first row in the image lies in the band.
   void build(const FrameGeometry& g, int width, int height, int rowBegin, int rowEnd,
              const uint32_t* faces, size_t count);
+  // The same with the frame's faces in parts (GeometrySource::pullAllParts): faces[i] is face
+  // faces[i].face of parts[faces[i].part].
+  void build(const std::vector<const FrameGeometry*>& parts, int width, int height, int rowBegin,
+             int rowEnd, const PartFace* faces, size_t count);
 
   int rowBegin = 0;  // the band's rows: the buckets below are indexed by row - rowBegin
   // Sorted by top row: the polygons whose top row is y are polygons[polygonBucket[y],
@@ -101,6 +111,12 @@ class PolygonTables {
   uint64_t triangleCount = 0;  // triangulation pieces of the classified polygons (a statistic)
 
  private:
+  // build() in three steps: start the band, classify each face (in face order), sort.
+  void begin(int height, int rowBegin, int rowEnd);
+  void classify(const FrameGeometry& g, uint32_t f, int width);
+  void sort();
+
+  int height_ = 0, rowEnd_ = 0;  // of the build under way
   // Classification in face order, before the sorts.
   std::vector<ClassifiedPolygon> unsortedPolygons_;
   std::vector<ClassifiedEdge> unsortedEdges_;

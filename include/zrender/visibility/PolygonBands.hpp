@@ -11,28 +11,39 @@ namespace zrender {
 
 // How the scan-line algorithms draw a frame on several threads: the image cut into bands of
 // rows, each drawn by one thread from polygon tables of its own (PolygonTables::build for a
-// band) and shaded by it; the counters of the bands added up in band order.
+// band) and shaded by it; the counters of the bands added up in band order. The frame's faces
+// come in parts (GeometrySource::pullAllParts): a big frame's are not joined into one
+// geometry, a copy of all of them.
 class PolygonBands {
  public:
   // drawBand(thread, tablesBuiltFor(band), rowEnd, stats) draws one band with the state of
   // `thread` (0..threads - 1), where tablesBuiltFor builds that thread's tables for the band.
   template <typename TablesOf, typename DrawBand>
-  void draw(const FrameInput& input, int width, int height, RenderStats& stats,
-            const TablesOf& tablesOf, const DrawBand& drawBand) {
+  void draw(FrameInput& input, int width, int height, RenderStats& stats, const TablesOf& tablesOf,
+            const DrawBand& drawBand) {
     const Threads& threads = *input.threads;
-    const FrameGeometry& g = input.geometry;
-    input.facesReady();
+    input.source.pullAllParts(input.geometry, parts_);
+    input.facesReady(parts_.size() == 1 && parts_[0] == &input.geometry);
     const RowBands bands(height, threads.count() * kBandsPerThread);
-    faceLists_.build(g.faces.size(), bands, threads, [&](size_t f, int& first, int& last) {
-      return faceRows(g, uint32_t(f), height, first, last);
-    });
+    std::vector<size_t> faceCounts;
+    for (const FrameGeometry* part : parts_) faceCounts.push_back(part->faces.size());
+    placer_.placeSegments(
+        faceCounts, bands, threads,
+        [&](size_t part, size_t f, int& first, int& last) {
+          return faceRows(*parts_[part], uint32_t(f), height, first, last);
+        },
+        [&](uint32_t total) { faces_.resize(total); },
+        [&](size_t part, size_t f, uint32_t k) {
+          faces_[k] = PartFace{uint32_t(part), uint32_t(f)};
+        });
     bandStats_.assign(size_t(bands.count()), RenderStats());
     threads.forEach(size_t(bands.count()), [&](size_t b) {
       const int thread = threads.slot(), rowBegin = bands.rowBegin(int(b));
       const int rowEnd = bands.rowEnd(int(b));
       PolygonTables& tables = tablesOf(thread);
-      tables.build(g, width, height, rowBegin, rowEnd, faceLists_.items(int(b)),
-                   faceLists_.size(int(b)));
+      const uint32_t first = placer_.start(int(b));
+      tables.build(parts_, width, height, rowBegin, rowEnd, faces_.data() + first,
+                   placer_.start(int(b) + 1) - first);
       bandStats_[b].trianglesRasterized += tables.triangleCount;
       drawBand(thread, rowEnd, bandStats_[b]);
       input.rowsReady(rowBegin, rowEnd);
@@ -41,7 +52,9 @@ class PolygonBands {
   }
 
  private:
-  BandLists faceLists_;  // the faces of each band
+  std::vector<const FrameGeometry*> parts_;  // the frame's faces
+  BandPlacer placer_;
+  std::vector<PartFace> faces_;  // the faces of each band, band after band
   std::vector<RenderStats> bandStats_;
 };
 
