@@ -40,25 +40,25 @@ bool faceRows(const FrameGeometry& g, uint32_t f, int height, int& first, int& l
   return first <= last;
 }
 
-void PolygonTables::build(const FrameGeometry& g, int width, int height, int rowBegin, int rowEnd,
+void PolygonTables::build(const FrameGeometry& g, int width, int height, int bandBegin, int bandEnd,
                           const uint32_t* faces, size_t count) {
-  begin(height, rowBegin, rowEnd);
+  begin(height, bandBegin, bandEnd);
   if (width > 0 && rowEnd_ > rowBegin)
     for (size_t i = 0; i < count; ++i) classify(g, faces ? faces[i] : uint32_t(i), width);
   sort();
 }
 
 void PolygonTables::build(const std::vector<const FrameGeometry*>& parts, int width, int height,
-                          int rowBegin, int rowEnd, const PartFace* faces, size_t count) {
-  begin(height, rowBegin, rowEnd);
+                          int bandBegin, int bandEnd, const PartFace* faces, size_t count) {
+  begin(height, bandBegin, bandEnd);
   if (width > 0 && rowEnd_ > rowBegin)
     for (size_t i = 0; i < count; ++i) classify(*parts[faces[i].part], faces[i].face, width);
   sort();
 }
 
-void PolygonTables::begin(int height, int bandBegin, int rowEnd) {
+void PolygonTables::begin(int height, int bandBegin, int bandEnd) {
   height_ = std::max(height, 0);
-  rowEnd_ = std::min(rowEnd, height_);
+  rowEnd_ = std::min(bandEnd, height_);
   rowBegin = bandBegin;
   unsortedPolygons_.clear();
   unsortedEdges_.clear();
