@@ -145,8 +145,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   const int frames = turntable ? options.turntable : 1;
   const bool framesAtOnce = turntable && threads.parallel() && frames >= threads.count();
   // One renderer, on several threads: its buffers are written once while the model loads, on
-  // a thread the loading leaves idle, instead of at the first frame (docs/performance.md,
-  // First touch). Not huge ones, which a model that fails to load would keep waiting.
+  // a thread the loading leaves idle, instead of at the first frame (docs/design.md, Threads). Not
+  // huge ones, which a model that fails to load would keep waiting.
   const int scale = sampleScaleOf(settings.msaa);
   const double frameBytes = double(settings.width) * double(settings.height) *
                             (double(sizeof(DepthKey)) * scale * scale + 3.0);

@@ -40,11 +40,10 @@ bool faceRows(const FrameGeometry& g, uint32_t f, int height, int& first, int& l
   return first <= last;
 }
 
-void PolygonTables::build(const FrameGeometry& g, int width, int height, int bandBegin, int bandEnd,
-                          const uint32_t* faces, size_t count) {
-  begin(height, bandBegin, bandEnd);
+void PolygonTables::build(const FrameGeometry& g, int width, int height) {
+  begin(height, 0, height);
   if (width > 0 && rowEnd_ > rowBegin)
-    for (size_t i = 0; i < count; ++i) classify(g, faces ? faces[i] : uint32_t(i), width);
+    for (size_t f = 0; f < g.faces.size(); ++f) classify(g, uint32_t(f), width);
   sort();
 }
 

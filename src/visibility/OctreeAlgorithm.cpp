@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "zrender/raster/RowBands.hpp"
+#include "zrender/scene/ScreenRows.hpp"
 
 namespace zrender {
 
@@ -58,13 +59,10 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
     return;
   }
   const Threads& threads = *input.threads;
-  // The bands share out the rows the model covers, where the work is.
-  int busyBegin = 0, busyEnd = fb.height() - 1;
-  if (!octree_.nodes().empty())
-    OctreeNodeTest(input.camera, fb.width(), fb.height())
-        .screenRows(octree_.nodes()[0], busyBegin, busyEnd);
+  // The bands share out the rows the instances cover, where the work is.
+  const RowSpan busy = screenRows(input.scene, input.camera, fb.height());
   const RowBands rows(fb.height(), threads.count() * kBandsPerThread, DepthPyramid::kTileSize,
-                      busyBegin, busyEnd + 1);
+                      busy.begin, busy.end);
   const size_t batches = batches_.size() - 1;
   if (!leafState_ || leafTriangles_.size() != batches) {
     leafState_ = std::make_unique<std::atomic<uint8_t>[]>(batches);

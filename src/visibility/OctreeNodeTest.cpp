@@ -23,21 +23,6 @@ OctreeNodeTest::OctreeNodeTest(const Camera& camera, int widthSamples, int heigh
       rowBegin_(rowBegin),
       rowEnd_(rowEnd < 0 ? heightSamples : rowEnd) {}
 
-bool OctreeNodeTest::screenRows(const OctreeNode& node, int& minY, int& maxY) const {
-  double y0 = HUGE_VAL, y1 = -HUGE_VAL;
-  for (int c = 0; c < 8; ++c) {
-    const Vec4 p = vp_ * Vec4(c & 1 ? node.hi[0] : node.lo[0], c & 2 ? node.hi[1] : node.lo[1],
-                              c & 4 ? node.hi[2] : node.lo[2], 1.0);
-    if (!(p[3] > 0.0 && p[2] > -p[3])) return false;
-    const double y = (1.0 - p[1] / p[3]) * 0.5 * height_;  // samples, down
-    y0 = std::min(y0, y), y1 = std::max(y1, y);
-  }
-  if (!(y0 <= y1)) return false;
-  minY = int(std::clamp(std::floor(y0 - 1.5), 0.0, height_));
-  maxY = int(std::clamp(std::ceil(y1 + 0.5), 0.0, height_ - 1.0));
-  return true;
-}
-
 bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid) const {
   // Clip-space corners: base + any subset of the three edge vectors.
   const Vec4 base = vp_ * Vec4(node.lo[0], node.lo[1], node.lo[2], 1.0);

@@ -69,31 +69,25 @@ struct ClassifiedPolygon {
   uint32_t edgeCount;  // its edges that are active on some row of the image
 };
 
-// Classified polygon table (CPT) and classified edge table (CET) of one frame, bucketed by top
-// row with counting sorts and stored in that order, so that the row loops walk memory forward.
-// Vectors are kept between frames so that building allocates only on growth.
-// Face `face` of part `part` of a frame's geometry in parts.
+// Face `face` of part `part` of a frame's geometry in parts (GeometrySource::pullAllParts).
 struct PartFace {
   uint32_t part;
   uint32_t face;
 };
 
+// Classified polygon table (CPT) and classified edge table (CET) of one frame, bucketed by top
+// row with counting sorts and stored in that order, so that the row loops walk memory forward.
+// Vectors are kept between frames so that building allocates only on growth.
 class PolygonTables {
  public:
   // Classifies every face of `g` against an image of width x height samples. Faces that cover
   // no sample of the image (above, below, left or right of it) are left out.
-  void build(const FrameGeometry& g, int width, int height) {
-    build(g, width, height, 0, height, nullptr, g.faces.size());
-  }
+  void build(const FrameGeometry& g, int width, int height);
   // The same for the band of sample rows [rowBegin, rowEnd) of the image alone, as if the
-  // image began at rowBegin: a polygon or an edge that starts above it is classified as
-  // starting on its first row (and its stepping starts there, exactly). `faces`: the indices
-  // into g.faces of those that may reach the band (null: all `count`). triangleCount counts
-  // the faces whose first row in the image lies in the band.
-  void build(const FrameGeometry& g, int width, int height, int rowBegin, int rowEnd,
-             const uint32_t* faces, size_t count);
-  // The same with the frame's faces in parts (GeometrySource::pullAllParts): faces[i] is face
-  // faces[i].face of parts[faces[i].part].
+  // image began at rowBegin, with the faces that may reach the band: faces[i] is face
+  // faces[i].face of parts[faces[i].part]. A polygon or an edge that starts above the band is
+  // classified as starting on its first row (and its stepping starts there, exactly).
+  // triangleCount counts the faces whose first row in the image lies in the band.
   void build(const std::vector<const FrameGeometry*>& parts, int width, int height, int rowBegin,
              int rowEnd, const PartFace* faces, size_t count);
 

@@ -22,9 +22,6 @@ class OctreeNodeTest {
   // its corner depths) and the corners lie in the box. A box that reaches the near plane is
   // never rejected for occlusion. NaN anywhere keeps the node.
   bool hidden(const OctreeNode& node, const DepthPyramid& pyramid) const;
-  // The sample rows [minY, maxY] of the image the node's box may cover, when it lies wholly in
-  // front of the near plane; false otherwise (then any row may hold its faces).
-  bool screenRows(const OctreeNode& node, int& minY, int& maxY) const;
 
  private:
   Mat4 vp_;                   // world to clip space
