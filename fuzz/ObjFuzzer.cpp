@@ -1,18 +1,24 @@
 // Fuzz target: OBJ (+ MTL) loading. Whatever the bytes, loadObjFromText returns a mesh whose
-// indices are all in range, or throws InputError with a one-line message naming the file.
-// Anything else (another exception, a crash, a sanitizer report) is a bug.
+// indices are all in range, or throws InputError with a one-line message naming the file; in
+// parts of any size, the same mesh or the same message; and a mesh loaded is the one
+// tinyobjloader's own parse reads. Anything else (another exception, a crash, a sanitizer
+// report) is a bug.
 //
 // Input: OBJ text, optionally followed by kMtlSeparator and the text of "model.mtl", which is
 // written beside the model so that "mtllib model.mtl" finds it.
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "FuzzSupport.hpp"
+#include "support/TinyObjReference.hpp"
 #include "zrender/io/ObjLoader.hpp"
 
 namespace {
@@ -23,6 +29,19 @@ using zrender::fuzz::fail;
 constexpr std::string_view kMtlSeparator = "\n#%MTL\n";
 // Keeps each execution fast; the loader's cost is linear in the text, so nothing is lost.
 constexpr size_t kMaxInput = 1 << 16;
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+bool identical(const zrender::Mesh& a, const zrender::Mesh& b) {
+  return sameBytes(a.positions, b.positions) && sameBytes(a.texcoords, b.texcoords) &&
+         sameBytes(a.normals, b.normals) && sameBytes(a.corners, b.corners) &&
+         a.faceStart == b.faceStart && a.faceMaterial == b.faceMaterial &&
+         a.materials.size() == b.materials.size();
+}
 
 bool finite(const cv::Vec3d& v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
@@ -60,6 +79,30 @@ void checkMesh(const zrender::Mesh& mesh) {
   }
 }
 
+// The text parsed in parts of `partBytes` bytes: the same mesh as parsed whole, or the same
+// message; and the mesh tinyobjloader's own parse reads.
+void checkParts(const std::string& obj, const fs::path& objPath,
+                const std::optional<zrender::Mesh>& whole, const std::string& message,
+                size_t partBytes) {
+  zrender::Warnings warnings;
+  try {
+    const zrender::Mesh parts =
+        zrender::loadObjFromText(obj, objPath, warnings, nullptr, partBytes);
+    if (!whole) fail("parsed in parts, loaded what the whole text refused: " + message);
+    if (!identical(parts, *whole)) fail("parsed in parts, a mesh unlike the whole text's");
+  } catch (const zrender::InputError& e) {
+    if (whole) fail(std::string("parsed in parts, refused what the whole text loaded: ") +
+                    e.what());
+    if (e.what() != message) fail(std::string("parsed in parts, another message: ") + e.what());
+  }
+  if (!whole) return;
+  std::string_view text(obj);
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // the loader skips it
+  const std::string difference =
+      zrender::test::geometryDifference(*whole, zrender::test::tinyObjReference(text));
+  if (!difference.empty()) fail("unlike tinyobjloader's parse: " + difference);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -80,13 +123,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
 
   zrender::Warnings warnings;
+  std::optional<zrender::Mesh> whole;
+  std::string message;
   try {
-    checkMesh(zrender::loadObjFromText(obj, objPath, warnings));
+    whole = zrender::loadObjFromText(obj, objPath, warnings);
+    checkMesh(*whole);
   } catch (const zrender::InputError& e) {
-    zrender::fuzz::checkMessage(e.what(), objPath.string() + ":", "error");
+    message = e.what();
+    zrender::fuzz::checkMessage(message, objPath.string() + ":", "error");
   } catch (const std::exception& e) {
     fail(std::string("unexpected exception: ") + e.what());
   }
+  checkParts(obj, objPath, whole, message, 1 + size % 61);
   for (const std::string& w : warnings) {
     zrender::fuzz::checkMessage(w, objPath.string() + ":", "warning");
   }

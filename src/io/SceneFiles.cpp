@@ -41,14 +41,14 @@ Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads
     Warnings textureWarnings;
     sideBySide(threads, 2, [&](size_t job) {
       if (job == 0) {
-        mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
+        mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads));
       } else {
         texture = loadTexture(settings, Mesh(), textureWarnings);
       }
     });
     warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
   } else {  // the texture may be named by the model's materials: after the model
-    mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings));
+    mesh = std::make_shared<const Mesh>(loadObj(settings.modelPath, warnings, threads));
     texture = loadTexture(settings, *mesh, warnings);
   }
   return makeScene(settings, std::move(mesh), std::move(texture));

@@ -4,10 +4,9 @@
 #include <string>
 #include <string_view>
 
-namespace zrender {
+#include "zrender/io/ObjLexer.hpp"
 
-// The statements of an OBJ file that the scan checks; the order matches Mesh's attribute arrays.
-enum class ObjStatement { kPosition = 0, kTexcoord = 1, kNormal = 2, kFace, kOther };
+namespace zrender {
 
 // How many of each statement an OBJ text holds, after scanObj() found them all valid.
 struct ObjCounts {
@@ -17,14 +16,11 @@ struct ObjCounts {
 };
 
 // The validation scan of OBJ text (docs/design.md, Errors): every v/vt/vn/f line's fields and
-// index ranges, with lines counted exactly as tinyobjloader splits them. tinyobjloader rc10
-// alone cannot name a bad line: it reads "v 1 abc 3" as (1, 0, 3) and "v nan 0 0" as
-// (0, 0, 0), "f 1 x 3" as index 0 and "f 1/ 2/ 3/" as texture index 2 (atoi reads on into the
-// next field), and its callback API, which the loader uses for the geometry, reports no line
-// numbers and passes indices raw, unchecked. So this pass, before tinyobjloader's, throws
-// InputError "FILE:LINE: what is wrong" at the first bad line (or for a positive index past
-// the final count). It allocates nothing and builds no geometry: tinyobjloader stays the
-// parser.
+// index ranges, with lines counted exactly as tinyobjloader splits them. Throws InputError
+// "FILE:LINE: what is wrong" at the first bad line (or for a positive index past the final
+// count). The parse (ObjParser) checks the same rules in parts of the text at once but cannot
+// name the first bad line; when it finds one, the loader runs this scan for the message. It
+// allocates nothing and builds no geometry.
 ObjCounts scanObj(const std::string& file, std::string_view text);
 
 // The line number of the ordinal-th (0-based) statement of a kind in `text`; 0 if none.

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace zrender {
+
+// The bytes of a file, read once for a parse. A regular file is mapped, not copied: its pages
+// come straight from the kernel's cache (for the bunny's 2.4 MB, 0.3 ms mapped against 1.9 ms
+// read into new memory). Anything else (a pipe) is read. If another program truncates a
+// mapped file while it is read, the process gets SIGBUS; editors write a new file and rename
+// it, which a mapping does not see (docs/design.md, Loading).
+class FileText {
+ public:
+  // Throws InputError "`file`: cannot open file" (or "... (it is a folder)", "cannot read file").
+  FileText(const std::string& path, const std::string& file);
+  ~FileText();
+  FileText(const FileText&) = delete;
+  FileText& operator=(const FileText&) = delete;
+
+  std::string_view text() const { return mapped_ ? std::string_view(mapped_, size_) : read_; }
+
+ private:
+  const char* mapped_ = nullptr;
+  size_t size_ = 0;
+  std::string read_;
+};
+
+}  // namespace zrender
