@@ -101,13 +101,12 @@ FrameReport renderRepeated(Renderer& renderer, const Camera& camera, int repeat)
   return report;
 }
 
-// The most frame memory made while the model loads, bytes (an 1800 x 1800 frame: 36 MB).
-constexpr double kMemoryAheadBytes = 256.0 * (1 << 20);
-
 }  // namespace
 
 int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err) {
   const double start = nowMs();
+  // First: its threads start while the settings are read (Threads::Threads).
+  const Threads threads(options.threads);  // the loading's, then the frames'
   Warnings warnings;
   auto flushWarnings = [&] {
     for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
@@ -137,29 +136,13 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   if (options.ids) checkOutputExtension(*options.ids, {".png"}, "id image");
 
   const double loadStart = nowMs();
-  const Threads threads(options.threads);  // the loading's, then the frames'
   // A turntable with at least as many frames as threads renders whole frames at once, each on
   // one thread by a renderer of one thread, rather than one frame after another split over the
   // threads: no slower, and up to a fifth faster where a frame splits worst (measured:
   // docs/performance.md, Turntables on several threads).
   const int frames = turntable ? options.turntable : 1;
   const bool framesAtOnce = turntable && threads.parallel() && frames >= threads.count();
-  // One renderer, on several threads: its buffers are written once while the model loads, on
-  // a thread the loading leaves idle, instead of at the first frame (docs/design.md, Threads). Not
-  // huge ones, which a model that fails to load would keep waiting.
-  const int scale = sampleScaleOf(settings.msaa);
-  const double frameBytes = double(settings.width) * double(settings.height) *
-                            (double(sizeof(DepthKey)) * scale * scale + 3.0);
-  const bool memoryAhead = threads.parallel() && !framesAtOnce && frameBytes <= kMemoryAheadBytes;
-  Scene loaded;
-  FrameMemory memory;
-  sideBySide(&threads, memoryAhead ? 2 : 1, [&](size_t job) {
-    if (job == 0)
-      loaded = loadScene(settings, warnings, &threads);
-    else
-      memory = firstTouchedFrameMemory(settings.width, settings.height, settings.msaa);
-  });
-  const Scene& scene = loaded;
+  const Scene scene = loadScene(settings, warnings, &threads);
   const double loadMs = nowMs() - loadStart;
   flushWarnings();
 
@@ -207,10 +190,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
 
   // Renders a frame and writes its own files: on any thread, several frames at once.
   const auto render = [&](size_t frame, size_t slot) {
-    if (!renderers[slot]) {
+    if (!renderers[slot])
       renderers[slot] = std::make_unique<Renderer>(scene, options.algorithm, rendererThreads);
-      if (memoryAhead) renderers[slot]->adoptMemory(std::move(memory));
-    }
     Renderer& renderer = *renderers[slot];
     const Camera camera =
         turntable ? turntableCamera(baseCamera, 360.0 * frame / frames) : baseCamera;
@@ -276,6 +257,19 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     if (turntable && tty) err << "\rzrender: frame " << (frame + 1) << "/" << frames << std::flush;
   };
 
+  // One renderer on several threads: its buffers are written once beside its prepare, which
+  // runs on one thread, in parts that the threads share once it is done, instead of by the
+  // first frame (docs/design.md, Threads).
+  if (threads.parallel() && !framesAtOnce) {
+    FrameMemory memory(settings.width, settings.height, settings.msaa);
+    sideBySide(&threads, 1 + memory.parts(), [&](size_t job) {
+      if (job == 0)
+        renderers[0] = std::make_unique<Renderer>(scene, options.algorithm, rendererThreads);
+      else
+        memory.touchPart(job - 1);
+    });
+    renderers[0]->adoptMemory(std::move(memory));
+  }
   pipelineInOrder(threads, size_t(frames), slots, render, finish);
   if (turntable && tty) err << "\r" << std::string(40, ' ') << "\r";
 

@@ -13,14 +13,38 @@ bool ColorImage::resize(int width, int height) {
   return true;
 }
 
-FrameMemory firstTouchedFrameMemory(int width, int height, int msaa) {
-  FrameMemory memory;
+namespace {
+
+constexpr size_t kPartBytes = size_t(2) << 20;
+
+size_t partsOf(size_t bytes) {
+  return (bytes + kPartBytes - 1) / kPartBytes;
+}
+
+}  // namespace
+
+FrameMemory::FrameMemory(int width, int height, int msaa) {
   const int scale = sampleScaleOf(msaa);
-  memory.buffer.resize(width * scale, height * scale);
-  memory.buffer.clear();
-  memory.color.resize(width, height);
-  memory.color.mat().setTo(cv::Scalar::all(0));
-  return memory;
+  buffer.resize(width * scale, height * scale);
+  color.resize(width, height);
+  keyParts_ = partsOf(buffer.size() * sizeof(DepthKey));
+  colorParts_ = std::min(partsOf(size_t(width) * size_t(height) * 3), size_t(std::max(height, 0)));
+}
+
+size_t FrameMemory::parts() const {
+  return keyParts_ + colorParts_;
+}
+
+void FrameMemory::touchPart(size_t part) {
+  if (part < keyParts_) {
+    buffer.clearPart(part, keyParts_);
+    return;
+  }
+  part -= keyParts_;
+  const int rows = color.mat().rows;
+  color.mat()
+      .rowRange(int(rows * part / colorParts_), int(rows * (part + 1) / colorParts_))
+      .setTo(cv::Scalar::all(0));
 }
 
 }  // namespace zrender

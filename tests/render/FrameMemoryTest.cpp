@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <utility>
 
 #include "support/TestSupport.hpp"
@@ -13,9 +15,15 @@
 namespace zrender {
 namespace {
 
-TEST(FrameMemory, FirstTouchedBuffersHoldTheClearKeyAndBlack) {
+FrameMemory touched(int width, int height, int msaa) {
+  FrameMemory m(width, height, msaa);
+  for (size_t part = 0; part < m.parts(); ++part) m.touchPart(part);
+  return m;
+}
+
+TEST(FrameMemory, TouchedBuffersHoldTheClearKeyAndBlack) {
   for (int msaa : {1, 4}) {
-    const FrameMemory m = firstTouchedFrameMemory(7, 5, msaa);
+    const FrameMemory m = touched(7, 5, msaa);
     const int scale = msaa == 4 ? 2 : 1;
     ASSERT_EQ(m.buffer.width(), 7 * scale);
     ASSERT_EQ(m.buffer.height(), 5 * scale);
@@ -25,6 +33,18 @@ TEST(FrameMemory, FirstTouchedBuffersHoldTheClearKeyAndBlack) {
     ASSERT_EQ(m.color.mat().type(), CV_8UC3);
     EXPECT_EQ(cv::countNonZero(m.color.mat().reshape(1)), 0);
   }
+}
+
+// Buffers of several parts each: every part written, every key and byte, once.
+TEST(FrameMemory, PartsCoverEveryByte) {
+  FrameMemory m(1000, 900, 4);  // 28.8 MB of keys, 2.7 MB of color
+  ASSERT_EQ(m.parts(), 14u + 2u);
+  std::fill(m.buffer.data(), m.buffer.data() + m.buffer.size(), DepthKey(0));
+  m.color.mat().setTo(cv::Scalar::all(7));
+  for (size_t part = 0; part < m.parts(); ++part) m.touchPart(part);
+  EXPECT_EQ(std::count(m.buffer.data(), m.buffer.data() + m.buffer.size(), kClearKey),
+            std::ptrdiff_t(m.buffer.size()));
+  EXPECT_EQ(cv::countNonZero(m.color.mat().reshape(1)), 0);
 }
 
 TEST(FrameMemory, AColorImageKeepsItsPixelsWhereTheyAreWhenMoved) {
@@ -55,7 +75,7 @@ TEST(FrameMemory, FramesInAdoptedBuffersAreTheSame) {
       own.renderFrame(camera);
       for (int size : {24, 17}) {
         Renderer adopting(scene, "zbuffer", threads);
-        adopting.adoptMemory(firstTouchedFrameMemory(size, size, msaa));
+        adopting.adoptMemory(touched(size, size, msaa));
         // Not cleared between frames either: a second frame finds the first one's keys.
         for (int frame = 0; frame < 2; ++frame) {
           adopting.renderFrame(camera);

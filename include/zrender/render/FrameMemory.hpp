@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include <opencv2/core.hpp>
@@ -36,18 +37,28 @@ class ColorImage {
 struct FrameMemory {
   FrameBuffer buffer;
   ColorImage color;
+
+  FrameMemory() = default;
+  // Buffers for frames of `width` x `height` pixels with `msaa` samples per pixel, not yet
+  // written. Written once, part by part (touchPart), beside the renderer's prepare, and given
+  // to the renderer (Renderer::adoptMemory), they spare its first frame the kernel's zeroing of
+  // new pages (the key buffer of a 1800 x 1800 frame is 26 MB; what a MB costs:
+  // docs/performance.md, The machine's two processors).
+  FrameMemory(int width, int height, int msaa);
+
+  // The parts it is written in, about a huge page (2 MiB) each: jobs of their own, which
+  // whichever thread is free takes.
+  size_t parts() const;
+  // Writes part `part` < parts(): the clear key in the key buffer, black in the color image.
+  void touchPart(size_t part);
+
+ private:
+  size_t keyParts_ = 0, colorParts_ = 0;
 };
 
 // Samples per pixel side for `msaa` samples per pixel (1 or 4).
 inline int sampleScaleOf(int msaa) {
   return msaa == 4 ? 2 : 1;
 }
-
-// Buffers for frames of `width` x `height` pixels with `msaa` samples per pixel, every byte
-// written once: made on another thread while the model loads and given to the renderer
-// (Renderer::adoptMemory), they spare its first frame the kernel's zeroing of new pages (the
-// key buffer of a 1800 x 1800 frame is 26 MB; what a MB costs: docs/performance.md, The
-// machine's two processors).
-FrameMemory firstTouchedFrameMemory(int width, int height, int msaa);
 
 }  // namespace zrender
