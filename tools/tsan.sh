@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything with ThreadSanitizer (-DZRENDER_TSAN=ON) in its own folder and runs the
 # tests of the code that runs on several threads (the thread-count identity tests, PNG encoding,
-# the command line with --threads, a turntable's frames at once, and jobs side by side); a data
-# race reported there fails the test.
+# the command line with --threads, a turntable's frames at once, jobs side by side, and the OBJ
+# parse in parts); a data race reported there fails the test.
 #   tools/tsan.sh [CTEST_ARGS...]
 # Environment: ZRENDER_TSAN_BUILD (default build-tsan), JOBS (default: processor count).
 set -euo pipefail
@@ -21,4 +21,4 @@ ninja -C "$build"
 # library, whose own synchronisation ThreadSanitizer cannot see.
 export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:suppressions=$root/tools/tsan.supp}
 cd "$build"
-ctest --output-on-failure -j "$jobs" -R 'ThreadCounts|ThreadsOption|TurntableThreads|PngWriter|SideBySide|SceneFiles|FrameMemory' "$@"
+ctest --output-on-failure -j "$jobs" -R 'ThreadCounts|ThreadsOption|TurntableThreads|PngWriter|SideBySide|SceneFiles|FrameMemory|ObjParser' "$@"

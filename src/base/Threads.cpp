@@ -12,9 +12,6 @@ Threads::Threads(int count) : count_(std::max(count, 1)) {
     limit_ = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                    size_t(count_));
   arena_ = std::make_unique<tbb::task_arena>(count_);
-  // oneTBB starts its threads at the first task; this one, which does nothing, starts them now,
-  // so that they are ready (about 2 ms later here) when the first loop comes.
-  arena_->enqueue([] {});
   slotMarks_ = std::make_unique<char[]>(size_t(count_));
 }
 

@@ -105,8 +105,6 @@ FrameReport renderRepeated(Renderer& renderer, const Camera& camera, int repeat)
 
 int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err) {
   const double start = nowMs();
-  // First: its threads start while the settings are read (Threads::Threads).
-  const Threads threads(options.threads);  // the loading's, then the frames'
   Warnings warnings;
   auto flushWarnings = [&] {
     for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
@@ -136,6 +134,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   if (options.ids) checkOutputExtension(*options.ids, {".png"}, "id image");
 
   const double loadStart = nowMs();
+  const Threads threads(options.threads);  // the loading's, then the frames'
   // A turntable with at least as many frames as threads renders whole frames at once, each on
   // one thread by a renderer of one thread, rather than one frame after another split over the
   // threads: no slower, and up to a fifth faster where a frame splits worst (measured:
