@@ -11,7 +11,7 @@ cd "$root"
 packages=(g++ cmake ninja-build pkg-config
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-videoio-dev
   libopencv-highgui-dev libx11-dev
-  libpng-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev
+  libpng-dev libisal-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev
   xvfb xdotool x11-apps)
 missing=()
 for p in "${packages[@]}"; do

@@ -1,5 +1,6 @@
 #include "zrender/io/PngWriter.hpp"
 
+#include <isa-l/igzip_lib.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 
 #include "zrender/base/Threads.hpp"
 #include "zrender/base/UninitializedAllocator.hpp"
+#include "zrender/io/PngRows.hpp"
 
 namespace zrender {
 
@@ -35,14 +37,13 @@ size_t sampleBytes(const cv::Mat& image) {
 }
 
 // One row as PNG stores it: the filter byte, then RGB for BGR, big-endian for 16-bit.
-void filterRow(const cv::Mat& image, int y, unsigned char* out) {
+void filterRow(const cv::Mat& image, int y, BgrToRgb toRgb, unsigned char* out) {
   out[0] = kFilterNone;
   unsigned char* samples = out + 1;
   const unsigned char* in = image.ptr<unsigned char>(y);
   const size_t n = sampleBytes(image);
   if (image.type() == CV_8UC3) {
-    for (size_t i = 0; i < n; i += 3)
-      samples[i] = in[i + 2], samples[i + 1] = in[i + 1], samples[i + 2] = in[i];
+    toRgb(in, samples, size_t(image.cols));
   } else if (image.type() == CV_16UC1) {
     for (size_t i = 0; i < n; i += 2) samples[i] = in[i + 1], samples[i + 1] = in[i];
   } else {
@@ -50,73 +51,61 @@ void filterRow(const cv::Mat& image, int y, unsigned char* out) {
   }
 }
 
-// A raw deflate stream (no zlib header or trailer) at level 1, appending to `out`.
-class RawDeflater {
- public:
-  RawDeflater() {
-    // Window 2^15 as the zlib header says; memory level 8 and the default strategy, as libpng
-    // uses for unfiltered rows.
-    ok_ = deflateInit2(&z_, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY) == Z_OK;
-  }
-  ~RawDeflater() {
-    if (ok_) deflateEnd(&z_);
-  }
-  RawDeflater(const RawDeflater&) = delete;
-  RawDeflater& operator=(const RawDeflater&) = delete;
-
-  bool ok() const { return ok_; }
-
-  // Deflates `n` bytes into `out`; `flush` is Z_NO_FLUSH, Z_SYNC_FLUSH (all input out, ending
-  // on a byte boundary) or Z_FINISH (the stream's last block). False on failure.
-  bool add(const unsigned char* data, size_t n, int flush, Bytes& out) {
-    z_.next_in = const_cast<Bytef*>(data);
-    z_.avail_in = uInt(n);
-    for (;;) {
-      // Room for a sync flush's marker and a block's end even when the input is all taken.
-      if (out.capacity() - out.size() < 64) out.reserve(2 * out.capacity() + 64);
-      const size_t used = out.size();
-      out.resize(out.capacity());
-      z_.next_out = out.data() + used;
-      z_.avail_out = uInt(out.size() - used);
-      const int rc = deflate(&z_, flush);
-      out.resize(out.size() - z_.avail_out);
-      if (rc != Z_OK && rc != Z_STREAM_END && rc != Z_BUF_ERROR) return false;
-      // Done when every byte is in and, for a flush, zlib had room to say all it had.
-      if (flush == Z_FINISH ? rc == Z_STREAM_END : z_.avail_in == 0 && z_.avail_out > 0)
-        return true;
-    }
-  }
-
- private:
-  z_stream z_{};
-  bool ok_ = false;
+// What a thread keeps from strip to strip: the strip's rows filtered, and igzip's level-1
+// buffer (its hash table and tokens).
+struct Scratch {
+  Bytes filtered;
+  Bytes level;
 };
 
 // One strip's part of the zlib stream: its rows deflated, and their Adler-32.
 struct Strip {
   Bytes deflated;
-  uLong adler = 0;
+  uint32_t adler = 1;
   size_t filteredBytes = 0;
   bool ok = false;
 };
 
-// Rows [first, end) filtered and deflated; the last strip finishes the deflate stream.
-Strip deflateStrip(const cv::Mat& image, int first, int end, bool last) {
+// Rows [first, end) filtered and deflated by igzip at level 1 as raw deflate (no header),
+// ending on a byte boundary (a sync flush), or, for the last strip, with the stream's last
+// block.
+Strip deflateStrip(const cv::Mat& image, int first, int end, bool last, Scratch& scratch) {
   Strip strip;
-  RawDeflater deflater;
-  if (!deflater.ok()) return strip;
   const size_t rowBytes = 1 + sampleBytes(image);
-  strip.filteredBytes = rowBytes * size_t(end - first);
-  // Level 1 on rendered frames gives about a tenth of the input; noise gives all of it.
-  strip.deflated.reserve(strip.filteredBytes / 8 + 64);
-  strip.adler = adler32(0, nullptr, 0);
-  Bytes row(rowBytes);
-  for (int y = first; y < end; ++y) {
-    filterRow(image, y, row.data());
-    strip.adler = adler32_z(strip.adler, row.data(), rowBytes);
-    const int flush = y + 1 < end ? Z_NO_FLUSH : last ? Z_FINISH : Z_SYNC_FLUSH;
-    if (!deflater.add(row.data(), rowBytes, flush, strip.deflated)) return strip;
+  const size_t n = rowBytes * size_t(end - first);
+  strip.filteredBytes = n;
+  scratch.filtered.resize(n);
+  const BgrToRgb toRgb = bgrToRgb();
+  for (int y = first; y < end; ++y)
+    filterRow(image, y, toRgb, scratch.filtered.data() + rowBytes * size_t(y - first));
+  strip.adler = isal_adler32(1, scratch.filtered.data(), n);
+
+  scratch.level.resize(ISAL_DEF_LVL1_DEFAULT);
+  isal_zstream z;
+  isal_deflate_init(&z);
+  z.level = 1;
+  z.level_buf = scratch.level.data();
+  z.level_buf_size = uint32_t(scratch.level.size());
+  z.flush = SYNC_FLUSH;
+  z.end_of_stream = last ? 1 : 0;
+  z.next_in = scratch.filtered.data();
+  z.avail_in = uint32_t(n);
+  // Stored blocks at worst (noise): 5 bytes of header per 64 KiB, and the flush. Only the
+  // pages written are touched.
+  strip.deflated.resize(n + n / 4096 + 1024);
+  z.next_out = strip.deflated.data();
+  z.avail_out = uint32_t(strip.deflated.size());
+  for (;;) {
+    if (isal_deflate(&z) != COMP_OK) return strip;
+    const bool done = z.avail_in == 0 && z.avail_out > 0 &&
+                      (!last || z.internal_state.state == ZSTATE_END);
+    if (done) break;
+    const size_t used = strip.deflated.size() - z.avail_out;  // out of room: more
+    strip.deflated.resize(2 * strip.deflated.size());
+    z.next_out = strip.deflated.data() + used;
+    z.avail_out = uint32_t(strip.deflated.size() - used);
   }
+  strip.deflated.resize(strip.deflated.size() - z.avail_out);
   strip.ok = true;
   return strip;
 }
@@ -197,17 +186,18 @@ bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, st
   const int rowsPerStrip = int(std::clamp<size_t>(stripBytes / rowBytes, 1, size_t(image.rows)));
   const size_t stripCount = (size_t(image.rows) + size_t(rowsPerStrip) - 1) / size_t(rowsPerStrip);
   std::vector<Strip> strips(stripCount);
+  std::vector<Scratch> scratch(size_t(threads.count()));
   threads.forEach(stripCount, [&](size_t i) {
     const int first = int(i) * rowsPerStrip;
-    strips[i] =
-        deflateStrip(image, first, std::min(first + rowsPerStrip, image.rows), i + 1 == stripCount);
+    strips[i] = deflateStrip(image, first, std::min(first + rowsPerStrip, image.rows),
+                             i + 1 == stripCount, scratch[size_t(threads.slot())]);
   });
 
   std::vector<Piece> pieces = {{kZlibHeader, sizeof kZlibHeader}};
   uLong adler = adler32(0, nullptr, 0);
   for (const Strip& s : strips) {
     if (!s.ok) {
-      error = "out of memory";  // the only way zlib's deflate fails on valid arguments
+      error = "compression failed";  // igzip fails only on arguments it does not take
       return false;
     }
     pieces.push_back({s.deflated.data(), s.deflated.size()});
