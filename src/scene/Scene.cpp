@@ -48,14 +48,18 @@ Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
   }
   if (!rotated.empty()) {
     scene.boundsCentre = ((box.lo + offLo) + (box.hi + offHi)) * 0.5;
+    // The farthest of the 8 extreme instances for each vertex, axis by axis: the squared
+    // distance is a sum over the axes, whose terms each pick the larger of two offsets, and a
+    // rounded sum never shrinks when a term grows, so this is the 8 corners' largest exactly.
     double r2 = 0.0;
-    for (int corner = 0; corner < 8; ++corner) {
-      const Vec3 off((corner & 1) ? offHi[0] : offLo[0], (corner & 2) ? offHi[1] : offLo[1],
-                     (corner & 4) ? offHi[2] : offLo[2]);
-      for (const Vec3& p : rotated) {
-        const Vec3 d = p + off - scene.boundsCentre;
-        r2 = std::max(r2, d.dot(d));
+    for (const Vec3& p : rotated) {
+      double d2 = 0.0;
+      for (int a = 0; a < 3; ++a) {
+        const double lo = (p[a] + offLo[a]) - scene.boundsCentre[a];
+        const double hi = (p[a] + offHi[a]) - scene.boundsCentre[a];
+        d2 += std::max(lo * lo, hi * hi);
       }
+      r2 = std::max(r2, d2);
     }
     scene.boundsRadius = std::sqrt(r2);
   }

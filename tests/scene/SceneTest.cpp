@@ -1,7 +1,10 @@
-// A scene's instances (Scene::modelMatrix): a grid is centred on the origin.
+// A scene's instances (Scene::modelMatrix): a grid is centred on the origin; the bounding
+// sphere holds them all.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "support/TestSupport.hpp"
@@ -26,6 +29,29 @@ TEST(Scene, GridInstancesAreCentredOnTheOrigin) {
     const Vec3 expected((n % 2 == 0 ? -0.5 : 0.5), (n / 2 % 2 == 0 ? -1.0 : 1.0),
                         (n / 4 == 0 ? -1.5 : 1.5));
     for (int a = 0; a < 3; ++a) EXPECT_EQ(moved[a], expected[a]) << "instance " << n << ", " << a;
+  }
+}
+
+// The bounding sphere's radius reaches the farthest vertex of every instance: the largest
+// distance from the centre over the vertices of all instances, computed here the long way, is
+// the radius to the last bit.
+TEST(Scene, TheBoundingSphereReachesTheFarthestVertexOfAnyInstance) {
+  for (const unsigned seed : {1u, 2u, 3u}) {
+    auto mesh = test::randomSoup(seed, 50, false);
+    SceneSettings s = test::tinySettings(8);
+    s.grid = Grid{{3, 2, 4}, {0.7, 1.9, 0.4}};
+    s.angle = 33.0;
+    s.axis = Vec3(1, 2, 3);
+    const Scene scene = makeScene(s, mesh);
+    double farthest = 0.0;
+    for (uint32_t n = 0; n < scene.instanceCount(); ++n) {
+      for (const Vec3& p : mesh->positions) {
+        const Vec3 rotated = transformPoint(rotation(s.angle, s.axis), p);
+        const Vec3 d = rotated + scene.instanceOffsets[n] - scene.boundsCentre;
+        farthest = std::max(farthest, d.dot(d));
+      }
+    }
+    EXPECT_EQ(scene.boundsRadius, std::sqrt(farthest)) << "seed " << seed;
   }
 }
 
