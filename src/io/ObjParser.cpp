@@ -138,6 +138,7 @@ bool parsePart(std::string_view text, const ObjLayout& layout, const ObjPart& pa
       ++numbers;
     }
     if (numbers < kMinNumbers[k]) return false;
+    if (count[k] == part.attributesBefore[k] + part.attributes[k]) return false;  // a guard
     const size_t ordinal = count[k]++;
     if (k == 1) {
       mesh.texcoords[ordinal] = cv::Vec2d(values[0], values[1]);
