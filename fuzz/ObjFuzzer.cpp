@@ -91,8 +91,8 @@ void checkParts(const std::string& obj, const fs::path& objPath,
     if (!whole) fail("parsed in parts, loaded what the whole text refused: " + message);
     if (!identical(parts, *whole)) fail("parsed in parts, a mesh unlike the whole text's");
   } catch (const zrender::InputError& e) {
-    if (whole) fail(std::string("parsed in parts, refused what the whole text loaded: ") +
-                    e.what());
+    if (whole)
+      fail(std::string("parsed in parts, refused what the whole text loaded: ") + e.what());
     if (e.what() != message) fail(std::string("parsed in parts, another message: ") + e.what());
   }
   if (!whole) return;

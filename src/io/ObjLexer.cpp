@@ -68,8 +68,7 @@ ObjCorner splitObjCorner(std::string_view field) {
   }
   // "v//vn" leaves the middle part empty; any other empty part ("1/", "/2", "1/2/") would make
   // tinyobjloader atoi into the next field.
-  corner.wellFormed =
-      ok && !corner.parts[0].empty() && !corner.parts[corner.partCount - 1].empty();
+  corner.wellFormed = ok && !corner.parts[0].empty() && !corner.parts[corner.partCount - 1].empty();
   return corner;
 }
 

@@ -1,12 +1,12 @@
 #include "zrender/io/ObjLoader.hpp"
 
 #include <algorithm>
-#include <istream>
 #include <cstdint>
 #include <fstream>
+#include <istream>
 #include <map>
-#include <streambuf>
 #include <stdexcept>
+#include <streambuf>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -179,9 +179,9 @@ Mesh loadObjFromText(std::string_view text, const std::filesystem::path& path, W
   MtlReader mtlReader(file, folder, warnings);
   MaterialBuilder builder;
   readMaterialLines(layout.materialLines, mtlReader, builder);
-  const size_t uses = static_cast<size_t>(
-      std::count_if(layout.materialLines.begin(), layout.materialLines.end(),
-                    [](const ObjMaterialLine& line) { return line.use; }));
+  const size_t uses =
+      static_cast<size_t>(std::count_if(layout.materialLines.begin(), layout.materialLines.end(),
+                                        [](const ObjMaterialLine& line) { return line.use; }));
   if (builder.used.size() != uses)
     throw std::logic_error(file + ": tinyobjloader and the parse disagree on the usemtl lines");
   for (int32_t& material : mesh.faceMaterial) material = material < 0 ? -1 : builder.used[material];

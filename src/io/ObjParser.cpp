@@ -90,8 +90,7 @@ bool resolveIndex(std::string_view part, int64_t value, size_t before, size_t to
 // The second pass over one part; false at the first statement that breaks the rules.
 bool parsePart(std::string_view text, const ObjLayout& layout, const ObjPart& part, Mesh& mesh,
                ObjNonFinite& nonFinite) {
-  size_t count[3] = {part.attributesBefore[0], part.attributesBefore[1],
-                     part.attributesBefore[2]};
+  size_t count[3] = {part.attributesBefore[0], part.attributesBefore[1], part.attributesBefore[2]};
   size_t face = part.facesBefore;
   size_t corner = part.cornersBefore;
   int32_t use = static_cast<int32_t>(part.usesBefore) - 1;  // the usemtl line in effect

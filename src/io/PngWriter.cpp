@@ -97,8 +97,8 @@ Strip deflateStrip(const cv::Mat& image, int first, int end, bool last, Scratch&
   z.avail_out = uint32_t(strip.deflated.size());
   for (;;) {
     if (isal_deflate(&z) != COMP_OK) return strip;
-    const bool done = z.avail_in == 0 && z.avail_out > 0 &&
-                      (!last || z.internal_state.state == ZSTATE_END);
+    const bool done =
+        z.avail_in == 0 && z.avail_out > 0 && (!last || z.internal_state.state == ZSTATE_END);
     if (done) break;
     const size_t used = strip.deflated.size() - z.avail_out;  // out of room: more
     strip.deflated.resize(2 * strip.deflated.size());

@@ -54,8 +54,7 @@ bool sameBits(double a, double b) {
 }
 
 // `library`: the text loads m.mtl, which defines red and green.
-void expectSameGeometry(const Mesh& parsed, const test::TinyObjGeometry& reference,
-                        bool library) {
+void expectSameGeometry(const Mesh& parsed, const test::TinyObjGeometry& reference, bool library) {
   ASSERT_EQ(test::geometryDifference(parsed, reference), "");
   ASSERT_EQ(parsed.faceMaterial.size(), reference.faceUse.size());
   for (size_t f = 0; f < parsed.faceMaterial.size(); ++f) {
@@ -98,14 +97,30 @@ std::string randomObj(unsigned seed) {
     std::uniform_real_distribution<double> value(-50.0, 50.0);
     char buf[64];
     switch (pick(8)) {
-      case 0: std::snprintf(buf, sizeof buf, "%.6f", value(rng)); break;
-      case 1: std::snprintf(buf, sizeof buf, "%.17g", value(rng)); break;
-      case 2: std::snprintf(buf, sizeof buf, "%+.3e", value(rng)); break;
-      case 3: std::snprintf(buf, sizeof buf, "%d", pick(2000) - 1000); break;
-      case 4: std::snprintf(buf, sizeof buf, "%d.", pick(100)); break;
-      case 5: std::snprintf(buf, sizeof buf, "-.%d", pick(100000)); break;
-      case 6: std::snprintf(buf, sizeof buf, "%.4E", value(rng) * 1e-7); break;
-      default: std::snprintf(buf, sizeof buf, "%.9g", value(rng)); break;
+      case 0:
+        std::snprintf(buf, sizeof buf, "%.6f", value(rng));
+        break;
+      case 1:
+        std::snprintf(buf, sizeof buf, "%.17g", value(rng));
+        break;
+      case 2:
+        std::snprintf(buf, sizeof buf, "%+.3e", value(rng));
+        break;
+      case 3:
+        std::snprintf(buf, sizeof buf, "%d", pick(2000) - 1000);
+        break;
+      case 4:
+        std::snprintf(buf, sizeof buf, "%d.", pick(100));
+        break;
+      case 5:
+        std::snprintf(buf, sizeof buf, "-.%d", pick(100000));
+        break;
+      case 6:
+        std::snprintf(buf, sizeof buf, "%.4E", value(rng) * 1e-7);
+        break;
+      default:
+        std::snprintf(buf, sizeof buf, "%.9g", value(rng));
+        break;
     }
     return std::string(buf);
   };
@@ -153,9 +168,9 @@ std::string randomObj(unsigned seed) {
         if (vn) line += "/" + index(2);
       }
     } else {
-      const char* const others[] = {"# a comment", "g part", "o object", "s 1", "",
-                                    "usemtl red",  "usemtl green  ", "usemtl blue", "usemtl\t",
-                                    "vp 1 2"};
+      const char* const others[] = {
+          "# a comment", "g part",         "o object",    "s 1",      "",
+          "usemtl red",  "usemtl green  ", "usemtl blue", "usemtl\t", "vp 1 2"};
       line += others[pick(10)];
     }
     if (pick(12) == 0) line += std::string(1, '\0') + "junk f 1 2";
@@ -179,8 +194,10 @@ TEST_F(ObjParser, ReadsWhatTinyObjLoaderReadsOnRandomTextInAnySplit) {
       Warnings warnings;
       Mesh mesh = loadWith(text, path, split, warnings);
       expectSameGeometry(mesh, reference, text.rfind("mtllib m.mtl\n", 0) == 0);
-      if (!first) first = std::make_unique<Mesh>(std::move(mesh));
-      else expectIdentical(mesh, *first);
+      if (!first)
+        first = std::make_unique<Mesh>(std::move(mesh));
+      else
+        expectIdentical(mesh, *first);
       if (HasFatalFailure()) return;
     }
   }

@@ -25,10 +25,10 @@ struct ObjMaterialLine {
 
 // One part of the text: whole lines, and what they hold.
 struct ObjPart {
-  size_t begin = 0, end = 0;          // bytes of the text
-  size_t attributes[3] = {0, 0, 0};   // v, vt, vn statements
+  size_t begin = 0, end = 0;         // bytes of the text
+  size_t attributes[3] = {0, 0, 0};  // v, vt, vn statements
   size_t faces = 0, corners = 0;
-  size_t uses = 0;                    // usemtl lines
+  size_t uses = 0;  // usemtl lines
   std::vector<ObjMaterialLine> materialLines;
   // Every earlier part's counts summed: where this part's statements go in the mesh.
   size_t attributesBefore[3] = {0, 0, 0};
