@@ -9,13 +9,11 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <exception>
 #include <fstream>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <vector>
 
 #include "FuzzSupport.hpp"
 #include "support/TinyObjReference.hpp"
@@ -29,19 +27,6 @@ using zrender::fuzz::fail;
 constexpr std::string_view kMtlSeparator = "\n#%MTL\n";
 // Keeps each execution fast; the loader's cost is linear in the text, so nothing is lost.
 constexpr size_t kMaxInput = 1 << 16;
-
-template <typename T>
-bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() &&
-         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-bool identical(const zrender::Mesh& a, const zrender::Mesh& b) {
-  return sameBytes(a.positions, b.positions) && sameBytes(a.texcoords, b.texcoords) &&
-         sameBytes(a.normals, b.normals) && sameBytes(a.corners, b.corners) &&
-         a.faceStart == b.faceStart && a.faceMaterial == b.faceMaterial &&
-         a.materials.size() == b.materials.size();
-}
 
 bool finite(const cv::Vec3d& v) {
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
@@ -89,7 +74,8 @@ void checkParts(const std::string& obj, const fs::path& objPath,
     const zrender::Mesh parts =
         zrender::loadObjFromText(obj, objPath, warnings, nullptr, partBytes);
     if (!whole) fail("parsed in parts, loaded what the whole text refused: " + message);
-    if (!identical(parts, *whole)) fail("parsed in parts, a mesh unlike the whole text's");
+    const std::string difference = zrender::test::meshBitsDifference(parts, *whole);
+    if (!difference.empty()) fail("parsed in parts, unlike the whole text: " + difference);
   } catch (const zrender::InputError& e) {
     if (whole)
       fail(std::string("parsed in parts, refused what the whole text loaded: ") + e.what());

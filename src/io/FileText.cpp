@@ -23,12 +23,12 @@ struct Descriptor {
 
 }  // namespace
 
-FileText::FileText(const std::string& path, const std::string& file) {
+FileText::FileText(const std::string& path) {
   const Descriptor in{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
-  if (in.fd < 0) throw InputError(file + ": cannot open file");
+  if (in.fd < 0) throw InputError(path + ": cannot open file");
   struct stat status {};
-  if (::fstat(in.fd, &status) != 0) throw InputError(file + ": cannot read file");
-  if (S_ISDIR(status.st_mode)) throw InputError(file + ": cannot open file (it is a folder)");
+  if (::fstat(in.fd, &status) != 0) throw InputError(path + ": cannot read file");
+  if (S_ISDIR(status.st_mode)) throw InputError(path + ": cannot open file (it is a folder)");
   if (S_ISREG(status.st_mode) && status.st_size > 0) {
     size_ = static_cast<size_t>(status.st_size);
     void* map = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, in.fd, 0);
@@ -44,7 +44,7 @@ FileText::FileText(const std::string& path, const std::string& file) {
     const ssize_t n = ::read(in.fd, buffer, sizeof buffer);
     if (n == 0) break;
     if (n < 0 && errno == EINTR) continue;
-    if (n < 0) throw InputError(file + ": cannot read file");
+    if (n < 0) throw InputError(path + ": cannot read file");
     read_.append(buffer, static_cast<size_t>(n));
   }
 }

@@ -1,6 +1,5 @@
 #include "zrender/io/ObjLoader.hpp"
 
-#include <algorithm>
 #include <cstdint>
 #include <fstream>
 #include <istream>
@@ -147,7 +146,7 @@ std::string resolveTexture(const fs::path& folder, const std::string& name) {
 }  // namespace
 
 Mesh loadObj(const std::filesystem::path& path, Warnings& warnings, const Threads* threads) {
-  const FileText file(path.string(), path.string());
+  const FileText file(path.string());
   return loadObjFromText(file.text(), path, warnings, threads);
 }
 
@@ -179,10 +178,7 @@ Mesh loadObjFromText(std::string_view text, const std::filesystem::path& path, W
   MtlReader mtlReader(file, folder, warnings);
   MaterialBuilder builder;
   readMaterialLines(layout.materialLines, mtlReader, builder);
-  const size_t uses =
-      static_cast<size_t>(std::count_if(layout.materialLines.begin(), layout.materialLines.end(),
-                                        [](const ObjMaterialLine& line) { return line.use; }));
-  if (builder.used.size() != uses)
+  if (builder.used.size() != layout.uses)
     throw std::logic_error(file + ": tinyobjloader and the parse disagree on the usemtl lines");
   for (int32_t& material : mesh.faceMaterial) material = material < 0 ? -1 : builder.used[material];
 

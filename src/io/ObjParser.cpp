@@ -17,8 +17,6 @@ namespace zrender {
 namespace {
 
 constexpr size_t kNone = std::numeric_limits<size_t>::max();
-// Fewest numbers each attribute statement needs (OBJ: v x y z [w], vt u [v [w]], vn i j k).
-constexpr int kMinNumbers[] = {3, 1, 3};
 
 // f(0) to f(n - 1): on `threads`, or in order on the calling thread if it is null.
 template <typename F>
@@ -136,7 +134,7 @@ bool parsePart(std::string_view text, const ObjLayout& layout, const ObjPart& pa
       if (numbers < 3) values[numbers] = value;
       ++numbers;
     }
-    if (numbers < kMinNumbers[k]) return false;
+    if (numbers < kObjMinNumbers[k]) return false;
     if (count[k] == part.attributesBefore[k] + part.attributes[k]) return false;  // a guard
     const size_t ordinal = count[k]++;
     if (k == 1) {
@@ -172,7 +170,6 @@ ObjLayout layOutObj(std::string_view text, const Threads* threads, size_t partBy
   }
   forEachOn(threads, layout.parts.size(), [&](size_t i) { countPart(text, layout.parts[i]); });
 
-  size_t uses = 0;
   for (ObjPart& part : layout.parts) {
     for (int k = 0; k < 3; ++k) {
       part.attributesBefore[k] = layout.attributes[k];
@@ -180,12 +177,12 @@ ObjLayout layOutObj(std::string_view text, const Threads* threads, size_t partBy
     }
     part.facesBefore = layout.faces;
     part.cornersBefore = layout.corners;
-    part.usesBefore = uses;
+    part.usesBefore = layout.uses;
     layout.materialLines.insert(layout.materialLines.end(), part.materialLines.begin(),
                                 part.materialLines.end());
     layout.faces += part.faces;
     layout.corners += part.corners;
-    uses += part.uses;
+    layout.uses += part.uses;
   }
   return layout;
 }

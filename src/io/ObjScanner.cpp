@@ -40,8 +40,6 @@ using Statement = ObjStatement;
 const char* const kKeyword[] = {"v", "vt", "vn"};
 const char* const kIndexName[] = {"vertex", "texture coordinate", "normal"};
 const char* const kPlural[] = {"vertices", "texture coordinates", "normals"};
-// Fewest numbers each attribute statement needs (OBJ: v x y z [w], vt u [v [w]], vn i j k).
-const int kMinNumbers[] = {3, 1, 3};
 
 class Scanner {
  public:
@@ -92,9 +90,9 @@ class Scanner {
         }
         ++numbers;
       }
-      if (numbers < kMinNumbers[k]) {
+      if (numbers < kObjMinNumbers[k]) {
         fail(std::string("malformed '") + kKeyword[k] + "' line: expected at least " +
-             std::to_string(kMinNumbers[k]) + " numbers, got " + std::to_string(numbers));
+             std::to_string(kObjMinNumbers[k]) + " numbers, got " + std::to_string(numbers));
       }
       ++counts.attributes[k];
     }

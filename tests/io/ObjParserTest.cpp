@@ -67,26 +67,6 @@ void expectSameGeometry(const Mesh& parsed, const test::TinyObjGeometry& referen
   }
 }
 
-void expectIdentical(const Mesh& a, const Mesh& b) {
-  ASSERT_EQ(a.positions.size(), b.positions.size());
-  for (size_t i = 0; i < a.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k) ASSERT_TRUE(sameBits(a.positions[i][k], b.positions[i][k])) << i;
-  ASSERT_EQ(a.texcoords.size(), b.texcoords.size());
-  for (size_t i = 0; i < a.texcoords.size(); ++i)
-    for (int k = 0; k < 2; ++k) ASSERT_TRUE(sameBits(a.texcoords[i][k], b.texcoords[i][k])) << i;
-  ASSERT_EQ(a.normals.size(), b.normals.size());
-  for (size_t i = 0; i < a.normals.size(); ++i)
-    for (int k = 0; k < 3; ++k) ASSERT_TRUE(sameBits(a.normals[i][k], b.normals[i][k])) << i;
-  ASSERT_EQ(a.faceStart, b.faceStart);
-  ASSERT_EQ(a.faceMaterial, b.faceMaterial);
-  ASSERT_EQ(a.corners.size(), b.corners.size());
-  for (size_t i = 0; i < a.corners.size(); ++i)
-    ASSERT_TRUE(a.corners[i].position == b.corners[i].position &&
-                a.corners[i].texcoord == b.corners[i].texcoord &&
-                a.corners[i].normal == b.corners[i].normal)
-        << i;
-}
-
 // Valid OBJ text in the variants exporters and hands write: numbers in every form the grammar
 // allows, w and extra numbers, vt of one to three numbers, the four corner forms, negative and
 // forward indices, tabs, CRLF and lone CR, NUL bytes, comments, groups and usemtl lines.
@@ -197,7 +177,7 @@ TEST_F(ObjParser, ReadsWhatTinyObjLoaderReadsOnRandomTextInAnySplit) {
       if (!first)
         first = std::make_unique<Mesh>(std::move(mesh));
       else
-        expectIdentical(mesh, *first);
+        ASSERT_EQ(test::meshBitsDifference(mesh, *first), "");
       if (HasFatalFailure()) return;
     }
   }
@@ -214,7 +194,8 @@ TEST(ObjParserModels, ReadWhatTinyObjLoaderReadsAndTheSameOnAnyThreads) {
     const Mesh one = loadWith(text, settings.modelPath, kSplits[0], warnings);
     ASSERT_EQ(test::geometryDifference(one, reference), "");
     for (const Split split : {Split{2, kObjPartBytes}, Split{3, 4096}, Split{7, 100000}}) {
-      expectIdentical(loadWith(text, settings.modelPath, split, warnings), one);
+      ASSERT_EQ(test::meshBitsDifference(loadWith(text, settings.modelPath, split, warnings), one),
+                "");
     }
   }
 }

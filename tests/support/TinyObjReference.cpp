@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <istream>
 #include <sstream>
 #include <string>
@@ -97,6 +98,27 @@ std::string geometryDifference(const Mesh& parsed, const TinyObjGeometry& refere
     if (a.position != b.position || a.texcoord != b.texcoord || a.normal != b.normal)
       return "corner " + std::to_string(i) + " differs";
   }
+  return "";
+}
+
+namespace {
+
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() &&
+         (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+}  // namespace
+
+std::string meshBitsDifference(const Mesh& a, const Mesh& b) {
+  if (!sameBytes(a.positions, b.positions)) return "positions differ";
+  if (!sameBytes(a.texcoords, b.texcoords)) return "texcoords differ";
+  if (!sameBytes(a.normals, b.normals)) return "normals differ";
+  if (!sameBytes(a.corners, b.corners)) return "corners differ";
+  if (a.faceStart != b.faceStart) return "faceStart differs";
+  if (a.faceMaterial != b.faceMaterial) return "faceMaterial differs";
+  if (a.materials.size() != b.materials.size()) return "material count differs";
   return "";
 }
 

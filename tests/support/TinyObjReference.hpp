@@ -27,4 +27,8 @@ TinyObjGeometry tinyObjReference(std::string_view text);
 // double, which it overflows) the coordinate is not compared.
 std::string geometryDifference(const Mesh& parsed, const TinyObjGeometry& reference);
 
+// How two parses of one text differ ("" if they do not): every coordinate and index bit for
+// bit, faceStart, faceMaterial and the number of materials.
+std::string meshBitsDifference(const Mesh& a, const Mesh& b);
+
 }  // namespace zrender::test

@@ -13,8 +13,8 @@ namespace zrender {
 // it, which a mapping does not see (docs/design.md, Loading).
 class FileText {
  public:
-  // Throws InputError "`file`: cannot open file" (or "... (it is a folder)", "cannot read file").
-  FileText(const std::string& path, const std::string& file);
+  // Throws InputError "PATH: cannot open file" (or "... (it is a folder)", "cannot read file").
+  explicit FileText(const std::string& path);
   ~FileText();
   FileText(const FileText&) = delete;
   FileText& operator=(const FileText&) = delete;

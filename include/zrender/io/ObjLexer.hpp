@@ -20,6 +20,9 @@ enum class ObjStatement { kPosition = 0, kTexcoord = 1, kNormal = 2, kFace, kOth
 constexpr int kObjMaxExponent = 400;
 // Corner stores int32 indices.
 constexpr int64_t kObjMaxIndex = std::numeric_limits<int32_t>::max();
+// Fewest numbers each attribute statement needs, by ObjStatement (OBJ: v x y z [w],
+// vt u [v [w]], vn i j k).
+constexpr int kObjMinNumbers[] = {3, 1, 3};
 
 inline bool isObjDigit(char c) {
   return c >= '0' && c <= '9';

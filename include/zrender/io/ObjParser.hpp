@@ -40,6 +40,7 @@ struct ObjLayout {
   std::vector<ObjPart> parts;
   size_t attributes[3] = {0, 0, 0};
   size_t faces = 0, corners = 0;
+  size_t uses = 0;                             // usemtl lines
   std::vector<ObjMaterialLine> materialLines;  // in file order
 };
 
