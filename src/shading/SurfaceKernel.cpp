@@ -28,7 +28,8 @@ void shadeSurfaceRowScalar(SurfaceSetup& setup, const DepthKey* keys, int width,
 }
 
 SurfaceRowFunction surfaceRow() {
-  return cpuHasAvx2() ? shadeSurfaceRowAvx2 : shadeSurfaceRowScalar;
+  if (!cpuHasAvx2()) return shadeSurfaceRowScalar;
+  return cpuGathersQuickly() ? shadeSurfaceRowAvx2Gathers : shadeSurfaceRowAvx2;
 }
 
 }  // namespace zrender

@@ -17,6 +17,12 @@ namespace zrender {
 
 namespace {
 
+// How the four texels of each lane are read (the same texels, so the same bits, either way).
+enum class TexelReads {
+  Loads,   // two 64-bit loads, each a pair of texels side by side
+  Gathers  // four gathers, each one texel of every lane
+};
+
 using F = __m256;
 using I = __m256i;
 
@@ -68,8 +74,7 @@ ZRENDER_AVX2 inline F channel(I texels, int byte) {
 }
 
 // The texels at index[k] + offset and the next one, for the eight lanes k: one 64-bit load
-// each, split into the left texels and the right ones. Loads beat gathers here: on AMD Zen 4
-// a gather costs about a cycle per element besides its set-up.
+// each, split into the left texels and the right ones.
 ZRENDER_AVX2 inline void loadPairs(const uint32_t* texels, const int32_t index[8], int offset,
                                    I& left, I& right) {
   long long p[8];
@@ -83,7 +88,8 @@ ZRENDER_AVX2 inline void loadPairs(const uint32_t* texels, const int32_t index[8
       _mm256_permute4x64_pd(_mm256_castps_pd(_mm256_shuffle_ps(lo, hi, 0xDD)), 0xD8));
 }
 
-// sampleTexture's operations: R, G, B in 0..255.
+// sampleTexture's operations: R, G, B in 0..255, the texels read as `reads` says.
+template <TexelReads reads>
 ZRENDER_AVX2 inline void sampleTexture(const SurfaceFrame& f, F u, F v, F rgb[3]) {
   const F zero = _mm256_setzero_ps();
   const F uu = _mm256_max_ps(_mm256_sub_ps(u, _mm256_floor_ps(u)), zero);
@@ -99,10 +105,18 @@ ZRENDER_AVX2 inline void sampleTexture(const SurfaceFrame& f, F u, F v, F rgb[3]
                        _mm256_cvttps_epi32(fx0)),
       _mm256_set1_epi32(stride + 1));
   I a, b, c, d;  // texels (x0, y0), (x0 + 1, y0), (x0, y0 + 1), (x0 + 1, y0 + 1)
-  alignas(32) int32_t index[8];
-  _mm256_store_si256(reinterpret_cast<__m256i*>(index), index0);
-  loadPairs(f.texels, index, 0, a, b);
-  loadPairs(f.texels, index, stride, c, d);
+  if (reads == TexelReads::Gathers) {
+    const int* texels = reinterpret_cast<const int*>(f.texels);
+    a = _mm256_i32gather_epi32(texels, index0, 4);
+    b = _mm256_i32gather_epi32(texels + 1, index0, 4);
+    c = _mm256_i32gather_epi32(texels + stride, index0, 4);
+    d = _mm256_i32gather_epi32(texels + stride + 1, index0, 4);
+  } else {
+    alignas(32) int32_t index[8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(index), index0);
+    loadPairs(f.texels, index, 0, a, b);
+    loadPairs(f.texels, index, stride, c, d);
+  }
   for (int i = 0; i < 3; ++i) {
     const int byte = 2 - i;  // R, G, B
     const F ca = channel(a, byte), cb = channel(b, byte);
@@ -132,6 +146,7 @@ ZRENDER_AVX2 inline I idsAt(const DepthKey* keys) {
 // another face id than keys[x], found block by block as the colors are computed; returns that
 // end. The last block writes up to 7 colors past the run: `out` (the row's colors) must have
 // room for them.
+template <TexelReads reads>
 [[gnu::always_inline]] ZRENDER_AVX2 inline int shadeTriangleRun(const SurfaceFrame& f,
                                                                 const FaceSurface& face,
                                                                 const SurfaceFan& fan,
@@ -229,7 +244,7 @@ ZRENDER_AVX2 inline I idsAt(const DepthKey* keys) {
       }
       const F light = _mm256_fmadd_ps(splat(0.9f), diffuse, splat(0.1f));
       F base[3] = {splat(face.base[0]), splat(face.base[1]), splat(face.base[2])};
-      if (face.textured) sampleTexture(f, tu, tv, base);
+      if (face.textured) sampleTexture<reads>(f, tu, tv, base);
       for (int k = 0; k < 3; ++k) t[k] = _mm256_fmadd_ps(base[k], light, shine);
     }
     const I rgb = _mm256_or_si256(
@@ -246,11 +261,10 @@ ZRENDER_AVX2 void shadePolygonRun(const SurfaceFrame& frame, const FaceSurface& 
   for (int i = 0; i < count; ++i) out[i] = surface::shadeSample(frame, face, fans, x + i, y);
 }
 
-}  // namespace
-
-ZRENDER_AVX2 void shadeSurfaceRunAvx2(const SurfaceFrame& frame, const FaceSurface& face,
-                                      const SurfaceFan* fans, int x, int y, int count,
-                                      uint32_t* out) {
+// A run as shadeSurfaceRunAvx2 colors it.
+template <TexelReads reads>
+ZRENDER_AVX2 void shadeRun(const SurfaceFrame& frame, const FaceSurface& face,
+                           const SurfaceFan* fans, int x, int y, int count, uint32_t* out) {
   if (face.fanCount != 1) {
     shadePolygonRun(frame, face, fans, x, y, count, out);
     return;
@@ -259,12 +273,14 @@ ZRENDER_AVX2 void shadeSurfaceRunAvx2(const SurfaceFrame& frame, const FaceSurfa
   std::vector<DepthKey> keys(size_t(x + count) + 1, makeDepthKey(0.5f, 0));
   keys.back() = makeDepthKey(0.5f, 1);
   std::vector<uint32_t> colors(keys.size() + 8);
-  shadeTriangleRun(frame, face, *fans, keys.data(), int(keys.size()), x, y, colors.data());
+  shadeTriangleRun<reads>(frame, face, *fans, keys.data(), int(keys.size()), x, y, colors.data());
   std::copy(colors.begin() + x, colors.begin() + x + count, out);
 }
 
-ZRENDER_AVX2 void shadeSurfaceRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
-                                      uint32_t background, uint32_t* out) {
+// A row as shadeSurfaceRowAvx2 colors it.
+template <TexelReads reads>
+ZRENDER_AVX2 void shadeRow(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                           uint32_t background, uint32_t* out) {
   const SurfaceFrame& frame = setup.frame();
   for (int x = 0; x < width;) {
     const uint32_t id = keyFaceId(keys[x]);
@@ -280,13 +296,35 @@ ZRENDER_AVX2 void shadeSurfaceRowAvx2(SurfaceSetup& setup, const DepthKey* keys,
     const FaceSurface& face = setup.surface(id);
     const SurfaceFan* fans = setup.fans(face);
     if (face.fanCount == 1) {
-      x = shadeTriangleRun(frame, face, *fans, keys, width, x, y, out);
+      x = shadeTriangleRun<reads>(frame, face, *fans, keys, width, x, y, out);
     } else {
       const int end = runEndAvx2(keys, x, width);
       shadePolygonRun(frame, face, fans, x, y, end - x, out + x);
       x = end;
     }
   }
+}
+
+}  // namespace
+
+void shadeSurfaceRunAvx2(const SurfaceFrame& frame, const FaceSurface& face, const SurfaceFan* fans,
+                         int x, int y, int count, uint32_t* out) {
+  shadeRun<TexelReads::Loads>(frame, face, fans, x, y, count, out);
+}
+
+void shadeSurfaceRunAvx2Gathers(const SurfaceFrame& frame, const FaceSurface& face,
+                                const SurfaceFan* fans, int x, int y, int count, uint32_t* out) {
+  shadeRun<TexelReads::Gathers>(frame, face, fans, x, y, count, out);
+}
+
+void shadeSurfaceRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                         uint32_t background, uint32_t* out) {
+  shadeRow<TexelReads::Loads>(setup, keys, width, y, background, out);
+}
+
+void shadeSurfaceRowAvx2Gathers(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                                uint32_t background, uint32_t* out) {
+  shadeRow<TexelReads::Gathers>(setup, keys, width, y, background, out);
 }
 
 }  // namespace zrender

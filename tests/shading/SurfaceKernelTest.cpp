@@ -1,7 +1,7 @@
-// SurfaceKernel: the vector version (AVX2, eight lanes) gives the scalar reference's bits, on
-// random faces (samples inside and outside the fan triangle, degenerate fans, infinite and NaN
-// planes, every mode, a texture read across its wrap) and on the rows of real frames (background,
-// polygons, runs of every length).
+// SurfaceKernel: the vector versions (AVX2, eight lanes, texels read by loads or by gathers)
+// give the scalar reference's bits, on random faces (samples inside and outside the fan
+// triangle, degenerate fans, infinite and NaN planes, every mode, a texture read across its
+// wrap) and on the rows of real frames (background, polygons, runs of every length).
 
 #include <gtest/gtest.h>
 
@@ -34,7 +34,10 @@ struct Version {
 // The vector versions this CPU runs.
 std::vector<Version> vectorVersions() {
   std::vector<Version> versions;
-  if (cpuHasAvx2()) versions.push_back({"avx2", shadeSurfaceRunAvx2, shadeSurfaceRowAvx2});
+  if (cpuHasAvx2()) {
+    versions.push_back({"avx2", shadeSurfaceRunAvx2, shadeSurfaceRowAvx2});
+    versions.push_back({"avx2 gathers", shadeSurfaceRunAvx2Gathers, shadeSurfaceRowAvx2Gathers});
+  }
   return versions;
 }
 

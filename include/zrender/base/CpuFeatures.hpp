@@ -11,5 +11,9 @@ namespace zrender {
 // then, and they give the same bits as their scalar versions (each is tested against its
 // scalar twin). Every CPU with AVX2 so far also has FMA.
 bool cpuHasAvx2();
+// Whether this CPU's AVX2 gathers are quick: about a cycle per element on Intel's cores, where
+// eight gathered texels beat eight loads and the shuffles that combine them; AMD's (Zen 3: 39
+// micro-ops for eight elements) do not (docs/performance.md, Shading).
+bool cpuGathersQuickly();
 
 }  // namespace zrender

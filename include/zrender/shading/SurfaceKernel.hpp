@@ -72,9 +72,12 @@ struct SurfaceFrame {
 // fans[0, face.fanCount)), into out[0, count) as 0x00RRGGBB.
 void shadeSurfaceRunScalar(const SurfaceFrame& frame, const FaceSurface& face,
                            const SurfaceFan* fans, int x, int y, int count, uint32_t* out);
-// Eight samples at a time. Call only when cpuHasAvx2().
+// Eight samples at a time. Call only when cpuHasAvx2(). The texture's texels are read by
+// loads, or by gathers (the same bits): faster where gathers are (cpuGathersQuickly()).
 void shadeSurfaceRunAvx2(const SurfaceFrame& frame, const FaceSurface& face, const SurfaceFan* fans,
                          int x, int y, int count, uint32_t* out);
+void shadeSurfaceRunAvx2Gathers(const SurfaceFrame& frame, const FaceSurface& face,
+                                const SurfaceFan* fans, int x, int y, int count, uint32_t* out);
 
 class SurfaceSetup;
 
@@ -86,9 +89,12 @@ void shadeSurfaceRowScalar(SurfaceSetup& setup, const DepthKey* keys, int width,
                            uint32_t background, uint32_t* out);
 void shadeSurfaceRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
                          uint32_t background, uint32_t* out);
+void shadeSurfaceRowAvx2Gathers(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                                uint32_t background, uint32_t* out);
 
 using SurfaceRowFunction = void (*)(SurfaceSetup&, const DepthKey*, int, int, uint32_t, uint32_t*);
-// The AVX2 version where the CPU runs it, else the scalar one.
+// The AVX2 version where the CPU runs it (with gathers where they are quick), else the scalar
+// one.
 SurfaceRowFunction surfaceRow();
 
 }  // namespace zrender
