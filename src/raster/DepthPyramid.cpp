@@ -6,6 +6,7 @@
 #include <climits>
 
 #include "zrender/base/CpuFeatures.hpp"
+#include "zrender/raster/KeyFill.hpp"
 
 namespace zrender {
 
@@ -108,7 +109,7 @@ void DepthPyramid::begin(FrameBuffer& fb, int rowBegin, int rowEnd) {
 
 void DepthPyramid::clearTileRow(int ty) {
   const int y0 = ty << kTileShift, y1 = std::min(y0 + kTileSize, height_);
-  for (int y = y0; y < y1; ++y) std::fill(rowPointer(y), rowPointer(y) + width_, kClearKey);
+  fillKeys(rowPointer(y0), size_t(y1 - y0) * size_t(width_), kClearKey);
   // Any sample holds the maximum of a clear tile; the last one is reached last by triangles
   // drawn top to bottom, which postpones the first rescan.
   uint32_t* argMax = tileArgMax_.data() + size_t(ty) * tilesX_;

@@ -20,7 +20,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
   int clearedRows = 0;
   auto clearRowsUpTo = [&](int lastRow) {
     if (lastRow < clearedRows) return;
-    std::fill(fb.row(clearedRows), fb.row(lastRow) + width, kClearKey);
+    fb.clearRows(clearedRows, lastRow + 1);
     clearedRows = lastRow + 1;
   };
   const TriangleFillFunction fill = triangleFill();
@@ -58,7 +58,7 @@ void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderSta
     const int band = int(b);
     const int top = band << TriangleBands::kBandShift;
     const int bottom = std::min(height, top + (1 << TriangleBands::kBandShift));
-    std::fill(fb.row(top), fb.row(bottom - 1) + width, kClearKey);
+    fb.clearRows(top, bottom);
     RenderStats& s = bandStats_[b];
     TriangleSetup setup;
     for (uint32_t i = bands_.bandStart(band); i < bands_.bandStart(band + 1); ++i) {

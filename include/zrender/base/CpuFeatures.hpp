@@ -15,5 +15,9 @@ bool cpuHasAvx2();
 // eight gathered texels beat eight loads and the shuffles that combine them; AMD's (Zen 3: 39
 // micro-ops for eight elements) do not (docs/performance.md, Shading).
 bool cpuGathersQuickly();
+// Whether `rep stos` writes whole cache lines without reading them first: Intel's fast string
+// stores (ERMS). Measured on Intel only; elsewhere plain stores fill memory
+// (docs/performance.md, The z-buffer's clear).
+bool cpuFillsWithoutReading();
 
 }  // namespace zrender

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "zrender/base/HugePageAllocator.hpp"
+#include "zrender/raster/KeyFill.hpp"
 #include "zrender/raster/RasterRules.hpp"
 
 namespace zrender {
@@ -30,6 +31,10 @@ class FrameBuffer {
     return fresh;
   }
   void clear() { std::fill(keys_.begin(), keys_.end(), kClearKey); }
+  // Rows [first, end), cleared.
+  void clearRows(int first, int end) {
+    fillKeys(row(first), size_t(end - first) * size_t(width_), kClearKey);
+  }
   // Part `part` of `parts` equal, contiguous parts of the samples, cleared.
   void clearPart(size_t part, size_t parts) {
     const size_t n = size();
