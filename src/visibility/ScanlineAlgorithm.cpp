@@ -56,7 +56,7 @@ void ScanlineAlgorithm::drawRows(Band& band, int rowEnd, const FrameInput& input
 
     // The one-row depth buffer is the frame buffer's row itself: cleared, then filled.
     DepthKey* row = fb.row(y);
-    std::fill(row, row + width, kClearKey);
+    fb.clearRows(y, y + 1);
     size_t keep = 0;
     for (size_t i = 0; i < activePolygons.size(); ++i) {
       const uint32_t pi = activePolygons[i];
