@@ -256,9 +256,9 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     if (turntable && tty) err << "\rzrender: frame " << (frame + 1) << "/" << frames << std::flush;
   };
 
-  // One renderer on several threads: its buffers are written once beside its prepare, which
-  // runs on one thread, in parts that the threads share once it is done, instead of by the
-  // first frame (docs/design.md, Threads).
+  // One renderer on several threads: its buffers' pages are faulted in beside its prepare,
+  // which runs on one thread, in parts that the threads share once it is done, instead of by
+  // the first frame (docs/design.md, Threads).
   if (threads.parallel() && !framesAtOnce) {
     FrameMemory memory(settings.width, settings.height, settings.msaa);
     sideBySide(&threads, 1 + memory.parts(), [&](size_t job) {

@@ -36,15 +36,23 @@ size_t FrameMemory::parts() const {
 }
 
 void FrameMemory::touchPart(size_t part) {
+  // One write per page: the fault, where the kernel zeroes the page, is the cost to move out of
+  // the first frame; clearing the keys here too would be done again by that frame.
+  unsigned char* first;
+  unsigned char* end;
   if (part < keyParts_) {
-    buffer.clearPart(part, keyParts_);
-    return;
+    auto* keys = reinterpret_cast<unsigned char*>(buffer.data());
+    const size_t bytes = buffer.size() * sizeof(DepthKey);
+    first = keys + bytes * part / keyParts_;
+    end = keys + bytes * (part + 1) / keyParts_;
+  } else {
+    part -= keyParts_;
+    const size_t bytes = color.mat().total() * color.mat().elemSize();
+    first = color.mat().data + bytes * part / colorParts_;
+    end = color.mat().data + bytes * (part + 1) / colorParts_;
   }
-  part -= keyParts_;
-  const int rows = color.mat().rows;
-  color.mat()
-      .rowRange(int(rows * part / colorParts_), int(rows * (part + 1) / colorParts_))
-      .setTo(cv::Scalar::all(0));
+  constexpr size_t kPage = 4096;  // bytes; huge pages are faulted by their first write
+  for (unsigned char* p = first; p < end; p += kPage) *static_cast<volatile unsigned char*>(p) = 0;
 }
 
 }  // namespace zrender

@@ -40,16 +40,17 @@ struct FrameMemory {
 
   FrameMemory() = default;
   // Buffers for frames of `width` x `height` pixels with `msaa` samples per pixel, not yet
-  // written. Written once, part by part (touchPart), beside the renderer's prepare, and given
-  // to the renderer (Renderer::adoptMemory), they spare its first frame the kernel's zeroing of
-  // new pages (the key buffer of a 1800 x 1800 frame is 26 MB; what a MB costs:
+  // written. Their pages faulted in part by part (touchPart), beside the renderer's prepare,
+  // and given to the renderer (Renderer::adoptMemory), they spare its first frame the kernel's
+  // zeroing of new pages (the key buffer of a 1800 x 1800 frame is 26 MB; what a MB costs:
   // docs/performance.md, The machine's two processors).
   FrameMemory(int width, int height, int msaa);
 
   // The parts it is written in, about a huge page (2 MiB) each: jobs of their own, which
   // whichever thread is free takes.
   size_t parts() const;
-  // Writes part `part` < parts(): the clear key in the key buffer, black in the color image.
+  // Faults in the pages of part `part` < parts() by a write to each; what they then hold is
+  // unspecified (every frame clears its keys and shades every pixel).
   void touchPart(size_t part);
 
  private:
