@@ -16,6 +16,11 @@
 namespace zrender {
 namespace {
 
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+TEST(HeapPages, NotMarkedUnderASanitizersMalloc) {
+  GTEST_SKIP() << "a sanitizer's malloc has no heap to mark";
+}
+#else
 // The VmFlags line of /proc/self/smaps for the mapping that holds `p` ("" if none does).
 std::string vmFlagsOf(const void* p) {
   std::ifstream smaps("/proc/self/smaps");
@@ -39,11 +44,6 @@ bool markedHuge(const void* p) {
   return vmFlagsOf(p).find(" hg") != std::string::npos;
 }
 
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-TEST(HeapPages, NotMarkedUnderASanitizersMalloc) {
-  GTEST_SKIP() << "a sanitizer's malloc has no heap to mark";
-}
-#else
 TEST(HeapPages, BlocksOfTheHeapLieInHugePages) {
   void* plain =
       mmap(nullptr, size_t(4) << 20, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
