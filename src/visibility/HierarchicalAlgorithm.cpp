@@ -161,9 +161,18 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
   bandStats_.assign(size_t(bands.count()), RenderStats());
   threadStats_.assign(size_t(threads.count()), RenderStats());
   BandsFilter filter(bandRasterizers_, bands, fb, threads, threadStats_);
+  const auto finishBand = [&](size_t b) {
+    bandRasterizers_[b].finish();
+    input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
+  };
   for (size_t i = 0; i < instances_.size(); ++i) {
     const size_t first = g.triangles.size();
     input.source.pullInstance(instances_[i], g, i > 0 ? &filter : nullptr);
+    // After the last instance's pull the geometry holds every face that can be in the
+    // buffer: the shader prepares them now, and each band is shaded by the thread that
+    // finishes it, while its keys are in that thread's cache, not read back afterwards.
+    const bool last = i + 1 == instances_.size();
+    if (last) input.facesReady();
     // The instance's triangles in each band they reach, drawn by the bands at once.
     bandTriangles_.build(
         g.triangles.size() - first, bands, threads, [&](size_t t, int& top, int& bottom) {
@@ -177,12 +186,10 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
       const uint32_t* t = bandTriangles_.items(int(b));
       for (size_t k = 0; k < bandTriangles_.size(int(b)); ++k)
         bandRasterizers_[b].drawTriangle(g.triangles[first + t[k]], bandStats_[b]);
+      if (last) finishBand(b);
     });
   }
-  threads.forEach(size_t(bands.count()), [&](size_t b) {
-    bandRasterizers_[b].finish();
-    input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
-  });
+  if (instances_.empty()) threads.forEach(size_t(bands.count()), finishBand);
   for (const RenderStats& s : bandStats_) stats += s;
   for (const RenderStats& s : threadStats_) stats += s;
   stats.trianglesHzbCulled += g.counters.filtered;
