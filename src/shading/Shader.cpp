@@ -127,7 +127,8 @@ bool Shader::prepareFaces(const Threads& threads, bool bufferFinal) {
   if (mode_ == ShadingMode::Depth) return bufferFinal;  // the range of the whole frame
   if (faceColors_) lookup_ = faceColors_->prepare(fb_->size(), &threads);
   if (surface_) {
-    if (geometry_ && surface_->setUpFaces(*geometry_, fb_->size())) return true;
+    if (geometry_ ? surface_->setUpFaces(*geometry_, fb_->size()) : surface_->setUpAll(fb_->size()))
+      return true;
     if (!bufferFinal) return false;
     surface_->setUpVisible(*fb_, geometry_, threads);
   }

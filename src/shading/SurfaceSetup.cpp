@@ -123,6 +123,16 @@ bool SurfaceSetup::setUpFaces(const FrameGeometry& geometry, size_t samples) {
   return true;
 }
 
+bool SurfaceSetup::setUpAll(size_t samples) {
+  if (batchDone_) return batched_;
+  batchDone_ = true;
+  const uint32_t n = scene_.faceCount();
+  if (size_t(n) * 16 > samples) return false;
+  batched_ = true;
+  for (uint32_t id = 0; id < n; ++id) surface(id);  // in order: no need to fetch ahead
+  return true;
+}
+
 void SurfaceSetup::setUpVisible(const FrameBuffer& fb, const FrameGeometry* geometry,
                                 const Threads& threads) {
   if (geometry && setUpFaces(*geometry, fb.size())) return;

@@ -45,6 +45,9 @@ class SurfaceSetup {
   // `samples` (a grid's many hidden faces are set up on first sight). Once per frame; true
   // when the batch was set up.
   bool setUpFaces(const FrameGeometry& geometry, size_t samples);
+  // The same for every face of the scene, for a frame whose geometry is not at hand (the
+  // octree's bands pull theirs apart): only when they are few for the buffer's `samples`.
+  bool setUpAll(size_t samples);
   // Sets up every face in `fb`, so that several threads can then color its rows at once:
   // setUpFaces() when `geometry` is given and that sets them up, else the faces found in the
   // buffer (scanned by `threads`).
