@@ -62,9 +62,9 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
     FrameInput input{scene_, camera, *source_, geometry_, nullptr, &threads_};
     std::fill(bandShadeMs_.begin(), bandShadeMs_.end(), 0.0);
     if (threads_.parallel()) {
-      input.onFacesReady = [this, &shadeMs](bool inGeometry) {
+      input.onFacesReady = [this, &shadeMs](const FaceParts& faces) {
         ScopedTimer shading(shadeMs);
-        if (!inGeometry) shader_.forgetGeometry();
+        shader_.useFaces(faces);
         shader_.prepareRows(threads_);
       };
       input.onRowsReady = [this](int first, int end) {

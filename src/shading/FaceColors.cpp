@@ -14,10 +14,10 @@ FaceColors::FaceColors(const Scene& scene, ShadingMode mode) : scene_(scene), mo
 }
 
 void FaceColors::begin(const std::vector<Mat4>& modelView, uint32_t background,
-                       const FrameGeometry* geometry) {
+                       const FaceParts& faces) {
   modelView_ = &modelView;
   background_ = background;
-  geometry_ = geometry;
+  faces_ = faces;
   if (cache_.size() != scene_.faceCount()) {
     cache_.assign(scene_.faceCount(), Cached());
     frame_ = 0;
@@ -80,7 +80,8 @@ FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
   // be in the buffer, so only theirs are computed, as they appear.
   if (!decided_) {
     decided_ = true;
-    const size_t faces = geometry_ ? geometry_->faces.size() : scene_.faceCount();
+    size_t faces = faces_.empty() ? size_t(scene_.faceCount()) : 0;
+    for (const FrameGeometry* part : faces_) faces += part->faces.size();
     lookup_ = faces * 16 <= samples ? Lookup::ById : Lookup::OnSight;
     const uint32_t meshFaces = uint32_t(scene_.mesh->faceCount());
     if (lookup_ == Lookup::OnSight && mode_ == ShadingMode::Normal && sharedRotation_ &&
@@ -98,7 +99,7 @@ FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
     // uint32_t(key) + 1 needs no branch (the background id wraps to 0).
     table_.resize(size_t(scene_.faceCount()) + 1);
     table_[0] = background_;
-    if (!geometry_) {
+    if (faces_.empty()) {
       if (threads && threads->parallel()) {
         threads->forRanges(scene_.faceCount(), 4096, [&](size_t begin, size_t end) {
           for (size_t id = begin; id < end; ++id) table_[id + 1] = uncachedColor(uint32_t(id));
@@ -109,8 +110,25 @@ FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
       return lookup_;
     }
   }
-  if (lookup_ != Lookup::ById || !geometry_) return lookup_;
-  const GeometryVector<ScreenFace>& faces = geometry_->faces;
+  if (lookup_ != Lookup::ById || faces_.empty()) return lookup_;
+  if (faces_.size() > 1) {
+    // Parts come whole, once per frame: each part a task (the threads write distinct entries).
+    size_t total = 0;
+    for (const FrameGeometry* p : faces_) total += p->faces.size();
+    if (tableFaces_ == total) return lookup_;
+    const auto part = [&](size_t p) {
+      for (const ScreenFace& face : faces_[p]->faces)
+        table_[size_t(face.id) + 1] = uncachedColor(face.id);
+    };
+    if (threads && threads->parallel())
+      threads->forEach(faces_.size(), part);
+    else
+      for (size_t p = 0; p < faces_.size(); ++p) part(p);
+    tableFaces_ = total;
+    return lookup_;
+  }
+  // One geometry, which may have grown since the last call (an algorithm of one thread).
+  const GeometryVector<ScreenFace>& faces = faces_[0]->faces;
   if (threads && threads->parallel()) {
     // Each face once: the threads write distinct entries.
     threads->forRanges(faces.size() - tableFaces_, 4096, [&](size_t begin, size_t end) {

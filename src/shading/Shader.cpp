@@ -89,8 +89,8 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::M
   background_ = mode_ == ShadingMode::Id
                     ? 0
                     : (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
-  geometry_ = geometry;
-  if (faceColors_) faceColors_->begin(modelView_, background_, geometry);
+  faces_ = geometry ? FaceParts{geometry} : FaceParts();
+  if (faceColors_) faceColors_->begin(modelView_, background_, faces_);
   if (surface_) surface_->begin(modelView_, camera, fb.width(), fb.height());
   perFace_ = scale == 1 && faceColors_;
   earlyShading_ = false;
@@ -127,17 +127,18 @@ bool Shader::prepareFaces(const Threads& threads, bool bufferFinal) {
   if (mode_ == ShadingMode::Depth) return bufferFinal;  // the range of the whole frame
   if (faceColors_) lookup_ = faceColors_->prepare(fb_->size(), &threads);
   if (surface_) {
-    if (geometry_ ? surface_->setUpFaces(*geometry_, fb_->size()) : surface_->setUpAll(fb_->size()))
+    if (faces_.empty() ? surface_->setUpAll(fb_->size())
+                       : surface_->setUpFaces(faces_, fb_->size()))
       return true;
     if (!bufferFinal) return false;
-    surface_->setUpVisible(*fb_, geometry_, threads);
+    surface_->setUpVisible(*fb_, faces_, threads);
   }
   return true;
 }
 
-void Shader::forgetGeometry() {
-  geometry_ = nullptr;
-  if (faceColors_) faceColors_->begin(modelView_, background_, nullptr);
+void Shader::useFaces(const FaceParts& faces) {
+  faces_ = faces;
+  if (faceColors_) faceColors_->begin(modelView_, background_, faces_);
 }
 
 void Shader::prepareRows(const Threads& threads) {
@@ -223,7 +224,7 @@ void Shader::shadePixelRows(int endRow) {
   if (endRow <= firstRow) return;
   shadedRows_ = endRow;
   if (perFace_) lookup_ = faceColors_->prepare(fb_->size());
-  if (surface_ && geometry_) surface_->setUpFaces(*geometry_, fb_->size());
+  if (surface_ && !faces_.empty()) surface_->setUpFaces(faces_, fb_->size());
   paintRows(firstRow, endRow, rowColors_, false);
 }
 

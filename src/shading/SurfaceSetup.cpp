@@ -98,11 +98,12 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   frame_.rayScaleY = float(rayScaleY_);
 }
 
-bool SurfaceSetup::setUpFaces(const FrameGeometry& geometry, size_t samples) {
+bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples) {
   if (batchDone_) return batched_;
   batchDone_ = true;
-  const GeometryVector<ScreenFace>& faces = geometry.faces;
-  if (faces.size() * 16 > samples) return false;
+  size_t count = 0;
+  for (const FrameGeometry* part : parts) count += part->faces.size();
+  if (count * 16 > samples) return false;
   batched_ = true;
   const Mesh& mesh = *scene_.mesh;
   const uint32_t nf = uint32_t(mesh.faceCount());
@@ -115,10 +116,13 @@ bool SurfaceSetup::setUpFaces(const FrameGeometry& geometry, size_t samples) {
     const char* end = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local + 1]);
     for (const char* p = first; p < end; p += 64) __builtin_prefetch(p);
   };
-  for (size_t i = 0; i < std::min(kAhead, faces.size()); ++i) prefetch(faces[i].id);
-  for (size_t i = 0; i < faces.size(); ++i) {
-    if (i + kAhead < faces.size()) prefetch(faces[i + kAhead].id);
-    surface(faces[i].id);
+  for (const FrameGeometry* part : parts) {
+    const GeometryVector<ScreenFace>& faces = part->faces;
+    for (size_t i = 0; i < std::min(kAhead, faces.size()); ++i) prefetch(faces[i].id);
+    for (size_t i = 0; i < faces.size(); ++i) {
+      if (i + kAhead < faces.size()) prefetch(faces[i + kAhead].id);
+      surface(faces[i].id);
+    }
   }
   return true;
 }
@@ -133,9 +137,9 @@ bool SurfaceSetup::setUpAll(size_t samples) {
   return true;
 }
 
-void SurfaceSetup::setUpVisible(const FrameBuffer& fb, const FrameGeometry* geometry,
+void SurfaceSetup::setUpVisible(const FrameBuffer& fb, const FaceParts& faces,
                                 const Threads& threads) {
-  if (geometry && setUpFaces(*geometry, fb.size())) return;
+  if (!faces.empty() && setUpFaces(faces, fb.size())) return;
   // The faces in the buffer, each listed once by the thread that marks it first (in no fixed
   // order: set-up order changes no color), then set up one after the other.
   std::vector<std::atomic<uint64_t>> seen((size_t(scene_.faceCount()) + 63) / 64);

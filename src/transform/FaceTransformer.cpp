@@ -203,13 +203,13 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
   }
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
-  const size_t samples = size_t(out.width) * size_t(out.height);
-  if (parts && (sizes[1] - out.faces.size()) * 16 > samples) {
+  // Left in parts for the algorithms that read them so (and the shader, which reads the faces'
+  // ids): joining them would be a copy of every vertex, face and triangle.
+  if (parts) {
     parts->clear();
     for (uint32_t c = 0; c < chunks; ++c) parts->push_back(&chunks_[c]);
     return;
   }
-  if (parts) parts->assign(1, &out);
   out.vertices.resize(sizes[0]);
   out.faces.resize(sizes[1]);
   out.triangles.resize(sizes[2]);

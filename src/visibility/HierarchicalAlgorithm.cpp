@@ -172,7 +172,7 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
     // buffer: the shader prepares them now, and each band is shaded by the thread that
     // finishes it, while its keys are in that thread's cache, not read back afterwards.
     const bool last = i + 1 == instances_.size();
-    if (last) input.facesReady();
+    if (last) input.facesReady({&g});
     // The instance's triangles in each band they reach, drawn by the bands at once.
     bandTriangles_.build(
         g.triangles.size() - first, bands, threads, [&](size_t t, int& top, int& bottom) {

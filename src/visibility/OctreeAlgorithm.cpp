@@ -73,7 +73,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   // The bands' leaves are pulled into geometry of their own, never the frame's; the shader's
   // face colors, which need none, are prepared now, so that each band is shaded by the thread
   // that finishes it, while its keys are in cache (surfaces wait for the whole buffer).
-  input.facesReady(false);
+  input.facesReady({});
   threads.forEach(size_t(rows.count()), [&](size_t b) {
     Band& band = bands_[b];
     const int rowBegin = rows.rowBegin(int(b)), rowEnd = rows.rowEnd(int(b));

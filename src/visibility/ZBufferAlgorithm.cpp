@@ -46,8 +46,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
 void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const Threads& threads = *input.threads;
   input.source.pullAllParts(input.geometry, parts_);
-  // A big frame's faces stay in parts, which the shader does not want anyway.
-  input.facesReady(parts_.size() == 1 && parts_[0] == &input.geometry);
+  input.facesReady(parts_);
   const int width = fb.width(), height = fb.height();
   const GeometryVector<ScreenTriangle>& triangles = bands_.bin(parts_, width, height, threads);
   // Each band is cleared and drawn by one thread, its triangles clipped to its rows; a

@@ -189,7 +189,7 @@ cv::Mat referenceImage(const Scene& scene, const Camera& camera, const FrameBuff
   ReferenceSurfaceShading surface(scene, mode);
   surface.begin(modelView, camera, fb.width(), fb.height());
   FaceColors faceColors(scene, mode);
-  faceColors.begin(modelView, background, nullptr);
+  faceColors.begin(modelView, background, FaceParts());
   float depthLo = 1.0f, depthHi = 0.0f;
   for (size_t i = 0; i < fb.size(); ++i) {
     if (keyFaceId(fb.data()[i]) == kBackgroundId) continue;

@@ -42,6 +42,11 @@ struct TransformCounters {
 template <class T>
 using GeometryVector = std::vector<T, UninitializedAllocator<T>>;
 
+struct FrameGeometry;
+// The frame's faces in parts, part after part (GeometrySource::pullAllParts): what the shader
+// reads of them (their ids), without a join into one geometry.
+using FaceParts = std::vector<const FrameGeometry*>;
+
 struct FrameGeometry {
   int width = 0, height = 0;  // in samples (pixels times 2 with MSAA 4)
   GeometryVector<FixedPoint> vertices;

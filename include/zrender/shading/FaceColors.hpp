@@ -18,10 +18,9 @@ class FaceColors {
   FaceColors(const Scene& scene, ShadingMode mode);
 
   // Starts a frame: `modelView` per instance (kept by reference until the next begin()), the
-  // packed `background`, and `geometry` (null: unknown), which holds every face that may be in
-  // the buffer by the time prepare() is called.
-  void begin(const std::vector<Mat4>& modelView, uint32_t background,
-             const FrameGeometry* geometry);
+  // packed `background`, and `faces` (empty: unknown), whose parts hold every face that may be
+  // in the buffer by the time prepare() is called.
+  void begin(const std::vector<Mat4>& modelView, uint32_t background, const FaceParts& faces);
 
   // Face `faceId`'s packed color (0x00RRGGBB), computed on first sight in the frame.
   uint32_t color(uint32_t faceId);
@@ -50,7 +49,7 @@ class FaceColors {
 
   // Per frame.
   const std::vector<Mat4>* modelView_ = nullptr;
-  const FrameGeometry* geometry_ = nullptr;
+  FaceParts faces_;
   uint32_t background_ = 0;
   // Every instance's model-view rotation (3 x 3) equals the first one's, as for grids.
   bool sharedRotation_ = false;

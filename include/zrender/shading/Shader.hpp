@@ -53,9 +53,10 @@ class Shader {
   // pixel rows that sample rows [first, end) complete, from any thread (disjoint rows at once);
   // finish(threads) colors the rows left.
   void prepareRows(const Threads& threads);
-  // The geometry given to begin() turns out not to hold the frame's faces: the faces are
-  // found otherwise (all the scene's, or those in the buffer).
-  void forgetGeometry();
+  // The frame's faces are those of the parts `faces` rather than of the geometry given to
+  // begin(); empty: they are not gathered, and are found otherwise (all the scene's, or those
+  // in the buffer).
+  void useFaces(const FaceParts& faces);
   void rowsReady(int first, int end);
 
  private:
@@ -88,8 +89,8 @@ class Shader {
   int scale_ = 1;
   int shadedRows_ = 0;  // pixel rows colored so far
   uint32_t background_ = 0;
-  const FrameGeometry* geometry_ = nullptr;  // the frame's faces, when given
-  bool perFace_ = false;                     // one sample per pixel, one color per face
+  FaceParts faces_;       // the frame's faces, when given
+  bool perFace_ = false;  // one sample per pixel, one color per face
   FaceColors::Lookup lookup_ = FaceColors::Lookup::OnSight;  // after FaceColors::prepare()
   float depthLo_ = 0.0f;                                     // depth mode: the frame's depth range
   double depthRange_ = 1.0;

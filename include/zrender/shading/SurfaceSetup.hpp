@@ -39,19 +39,19 @@ class SurfaceSetup {
   }
   const SurfaceFan* fans(const FaceSurface& face) const { return fans_.data() + face.firstFan; }
 
-  // Sets up every face of `geometry` (the frame's faces, which hold those in the buffer) in a
+  // Sets up every face of `faces` (the frame's faces, which hold those in the buffer) in a
   // batch, each face's data fetched into cache a few faces ahead, instead of one cache miss
   // after another as rows meet the faces; only when the faces are few for the buffer's
   // `samples` (a grid's many hidden faces are set up on first sight). Once per frame; true
   // when the batch was set up.
-  bool setUpFaces(const FrameGeometry& geometry, size_t samples);
+  bool setUpFaces(const FaceParts& faces, size_t samples);
   // The same for every face of the scene, for a frame whose geometry is not at hand (the
   // octree's bands pull theirs apart): only when they are few for the buffer's `samples`.
   bool setUpAll(size_t samples);
   // Sets up every face in `fb`, so that several threads can then color its rows at once:
-  // setUpFaces() when `geometry` is given and that sets them up, else the faces found in the
+  // setUpFaces() when `faces` are given and that sets them up, else the faces found in the
   // buffer (scanned by `threads`).
-  void setUpVisible(const FrameBuffer& fb, const FrameGeometry* geometry, const Threads& threads);
+  void setUpVisible(const FrameBuffer& fb, const FaceParts& faces, const Threads& threads);
 
  private:
   uint32_t setUp(uint32_t faceId);

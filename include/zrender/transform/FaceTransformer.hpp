@@ -36,8 +36,7 @@ class FaceTransformer : public GeometrySource {
 
   void beginFrame(const Camera& camera) override;
   void pullAll(FrameGeometry& out) override;
-  // On several threads, the parts are the chunks of pullAll() left apart when the faces are
-  // too many for the shader to want them (more than a sixteenth of the samples).
+  // On several threads, the parts are the chunks of pullAll() left apart.
   void pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) override;
   void pullInstance(uint32_t instance, FrameGeometry& out,
                     TriangleFilter* filter = nullptr) override;

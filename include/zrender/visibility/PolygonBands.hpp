@@ -23,7 +23,7 @@ class PolygonBands {
             const DrawBand& drawBand) {
     const Threads& threads = *input.threads;
     input.source.pullAllParts(input.geometry, parts_);
-    input.facesReady(parts_.size() == 1 && parts_[0] == &input.geometry);
+    input.facesReady(parts_);
     const RowBands bands(height, threads.count() * kBandsPerThread);
     std::vector<size_t> faceCounts;
     for (const FrameGeometry* part : parts_) faceCounts.push_back(part->faces.size());

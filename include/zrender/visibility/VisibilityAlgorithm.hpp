@@ -37,18 +37,19 @@ struct FrameInput {
   // With several threads: sample rows [first, end) hold their final keys, so that they are
   // shaded by the thread that drew them while still in its cache. Any thread may call it; the
   // rows of different calls never overlap. May be empty. Rows are shaded then only if the
-  // algorithm said before, from the thread that called render(), that the geometry holds every
-  // face of the frame (onFacesReady), so that the faces' colors are prepared ahead.
+  // algorithm said before, from the thread that called render(), where the frame's faces are
+  // (onFacesReady), so that their colors are prepared ahead.
   std::function<void(int, int)> onRowsReady = nullptr;
-  // The argument: whether `geometry` holds the frame's faces (false: they are elsewhere).
-  std::function<void(bool)> onFacesReady = nullptr;
+  // The argument: the parts that hold every face of the frame, valid until the frame's end
+  // (empty: the faces are not gathered).
+  std::function<void(const FaceParts&)> onFacesReady = nullptr;
 
   bool parallel() const { return threads != nullptr && threads->parallel(); }
   void rowsReady(int first, int end) const {
     if (onRowsReady) onRowsReady(first, end);
   }
-  void facesReady(bool inGeometry = true) const {
-    if (onFacesReady) onFacesReady(inGeometry);
+  void facesReady(const FaceParts& parts) const {
+    if (onFacesReady) onFacesReady(parts);
   }
   void rowsFinal(int rows) const {
     if (onRowsFinal) onRowsFinal(rows);
