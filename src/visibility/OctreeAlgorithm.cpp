@@ -13,6 +13,12 @@ namespace zrender {
 
 namespace {
 
+// Bands per thread: more than the other algorithms' kBandsPerThread. A band's work is where the
+// octree's leaves fall in its rows, and on a grid the front rows hold far more than the back
+// ones; thinner bands balance that better, until each band's own traversal of the upper nodes
+// costs more (measured: docs/performance.md, Two threads, 2026-11-26 (later)).
+constexpr int kOctreeBandsPerThread = 12;
+
 // Buffer rows are fetched this many triangles ahead of drawing.
 constexpr size_t kAhead = 4;
 
@@ -61,7 +67,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   const Threads& threads = *input.threads;
   // The bands share out the rows the instances cover, where the work is.
   const RowSpan busy = screenRows(input.scene, input.camera, fb.height());
-  const RowBands rows(fb.height(), threads.count() * kBandsPerThread, DepthPyramid::kTileSize,
+  const RowBands rows(fb.height(), threads.count() * kOctreeBandsPerThread, DepthPyramid::kTileSize,
                       busy.begin, busy.end);
   const size_t batches = batches_.size() - 1;
   if (!leafState_ || leafTriangles_.size() != batches) {
