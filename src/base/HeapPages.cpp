@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "zrender/base/HugePageAllocator.hpp"
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #include <sys/mman.h>
@@ -16,7 +18,7 @@ bool useHugePagesForHeap() {
 #if defined(__GLIBC__) && defined(MADV_HUGEPAGE)
   constexpr int kMmapThreshold = 32 << 20;  // bytes: glibc's largest on 64 bits
   constexpr int kTopPad = 128 << 20;        // bytes the heap grows by beyond a request
-  constexpr uintptr_t kHugePage = uintptr_t(1) << 21;
+  constexpr uintptr_t kHugePage = HugePageAllocator<char>::kHugePage;
   if (mallopt(M_MMAP_THRESHOLD, kMmapThreshold) != 1 || mallopt(M_TOP_PAD, kTopPad) != 1 ||
       mallopt(M_TRIM_THRESHOLD, 2 * kTopPad) != 1)
     return false;  // another malloc (a sanitizer's): nothing to mark

@@ -80,8 +80,7 @@ FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
   // be in the buffer, so only theirs are computed, as they appear.
   if (!decided_) {
     decided_ = true;
-    size_t faces = faces_.empty() ? size_t(scene_.faceCount()) : 0;
-    for (const FrameGeometry* part : faces_) faces += part->faces.size();
+    const size_t faces = faces_.empty() ? size_t(scene_.faceCount()) : totalFaces(faces_);
     lookup_ = faces * 16 <= samples ? Lookup::ById : Lookup::OnSight;
     const uint32_t meshFaces = uint32_t(scene_.mesh->faceCount());
     if (lookup_ == Lookup::OnSight && mode_ == ShadingMode::Normal && sharedRotation_ &&
@@ -113,8 +112,7 @@ FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
   if (lookup_ != Lookup::ById || faces_.empty()) return lookup_;
   if (faces_.size() > 1) {
     // Parts come whole, once per frame: each part a task (the threads write distinct entries).
-    size_t total = 0;
-    for (const FrameGeometry* p : faces_) total += p->faces.size();
+    const size_t total = totalFaces(faces_);
     if (tableFaces_ == total) return lookup_;
     const auto part = [&](size_t p) {
       for (const ScreenFace& face : faces_[p]->faces)

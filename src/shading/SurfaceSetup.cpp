@@ -101,9 +101,7 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
 bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples) {
   if (batchDone_) return batched_;
   batchDone_ = true;
-  size_t count = 0;
-  for (const FrameGeometry* part : parts) count += part->faces.size();
-  if (count * 16 > samples) return false;
+  if (totalFaces(parts) * 16 > samples) return false;
   batched_ = true;
   const Mesh& mesh = *scene_.mesh;
   const uint32_t nf = uint32_t(mesh.faceCount());

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -61,5 +62,12 @@ struct FrameGeometry {
     counters = TransformCounters();
   }
 };
+
+// The faces that `parts` hold together.
+inline size_t totalFaces(const FaceParts& parts) {
+  size_t n = 0;
+  for (const FrameGeometry* part : parts) n += part->faces.size();
+  return n;
+}
 
 }  // namespace zrender
