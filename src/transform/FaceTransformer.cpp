@@ -134,17 +134,16 @@ void FaceTransformer::pullAllParts(FrameGeometry& out, std::vector<const FrameGe
   pullParallel(-1, out, nullptr, &parts);
 }
 
-void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
-                                   std::vector<const FrameGeometry*>* parts) {
-  ScopedTimer timer(transformMs_);
+uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filter,
+                                          std::vector<FrameGeometry>& chunks) {
   const Threads& threads = *threads_;
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   // A grid: one chunk per instance, each projecting its own vertices. One instance: its
   // vertices projected by all threads, then its faces in chunks.
   const bool single = instance >= 0 || scene_.instanceCount() == 1;
   const uint32_t only = instance >= 0 ? uint32_t(instance) : 0;
-  const uint32_t chunks = single ? (nf + kChunkFaces - 1) / kChunkFaces : scene_.instanceCount();
-  if (chunks_.size() < chunks) chunks_.resize(chunks);
+  const uint32_t count = single ? (nf + kChunkFaces - 1) / kChunkFaces : scene_.instanceCount();
+  if (chunks.size() < count) chunks.resize(count);
   const InstanceView onlyView = viewOfInstance(only);
   HiddenTiles hidden;
   if (single && !onlyView.outside) {
@@ -157,8 +156,8 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
       projectSlots(only, begin, end, instanceState_.data(), instanceWindow_.data());
     });
   }
-  threads.forEach(chunks, [&](size_t c) {
-    FrameGeometry& chunk = chunks_[c];
+  threads.forEach(count, [&](size_t c) {
+    FrameGeometry& chunk = chunks[c];
     chunk.clear();
     Worker& w = workers_[size_t(threads.slot())];
     const uint32_t k = single ? only : uint32_t(c);
@@ -187,6 +186,13 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
     assembleFaces(k, 0, nf, VertexView{w.state.data(), w.window.data(), nullptr, nullptr, k},
                   w.assembler, chunk);
   });
+  return count;
+}
+
+void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
+                                   std::vector<const FrameGeometry*>* parts) {
+  ScopedTimer timer(transformMs_);
+  const uint32_t chunks = transformChunks(instance, filter, chunks_);
   // Joined in chunk order, which is face id order: the geometry of one thread exactly.
   std::vector<std::array<size_t, 3>> base(chunks);
   size_t sizes[3] = {out.vertices.size(), out.faces.size(), out.triangles.size()};
@@ -195,11 +201,7 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
     sizes[0] += chunks_[c].vertices.size();
     sizes[1] += chunks_[c].faces.size();
     sizes[2] += chunks_[c].triangles.size();
-    const TransformCounters& k = chunks_[c].counters;
-    out.counters.backfaceCulled += k.backfaceCulled;
-    out.counters.clippedAway += k.clippedAway;
-    out.counters.degenerate += k.degenerate;
-    out.counters.filtered += k.filtered;
+    out.counters += chunks_[c].counters;
   }
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
@@ -213,7 +215,17 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
   out.vertices.resize(sizes[0]);
   out.faces.resize(sizes[1]);
   out.triangles.resize(sizes[2]);
-  threads.forEach(chunks, [&](size_t c) { appendChunk(chunks_[c], base[c].data(), out); });
+  threads_->forEach(chunks, [&](size_t c) { appendChunk(chunks_[c], base[c].data(), out); });
+}
+
+void FaceTransformer::pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
+                                        TriangleFilter* filter) {
+  if (!(threads_ && threads_->parallel())) {
+    GeometrySource::pullInstanceParts(instance, parts, filter);
+    return;
+  }
+  ScopedTimer timer(transformMs_);
+  parts.resize(transformChunks(instance, filter, parts));
 }
 
 void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter) {

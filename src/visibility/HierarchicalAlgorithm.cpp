@@ -165,27 +165,38 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
     bandRasterizers_[b].finish();
     input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
   };
+  instanceParts_.resize(instances_.size());
+  FaceParts faces;  // every part of the instances pulled so far
+  std::vector<size_t> segments;
   for (size_t i = 0; i < instances_.size(); ++i) {
-    const size_t first = g.triangles.size();
-    input.source.pullInstance(instances_[i], g, i > 0 ? &filter : nullptr);
-    // After the last instance's pull the geometry holds every face that can be in the
-    // buffer: the shader prepares them now, and each band is shaded by the thread that
-    // finishes it, while its keys are in that thread's cache, not read back afterwards.
+    std::vector<FrameGeometry>& parts = instanceParts_[i];
+    input.source.pullInstanceParts(instances_[i], parts, i > 0 ? &filter : nullptr);
+    segments.clear();
+    for (const FrameGeometry& part : parts) {
+      faces.push_back(&part);
+      segments.push_back(part.triangles.size());
+      g.counters += part.counters;
+    }
+    // After the last instance's pull the parts hold every face that can be in the buffer:
+    // the shader prepares them now, and each band is shaded by the thread that finishes it,
+    // while its keys are in that thread's cache, not read back afterwards.
     const bool last = i + 1 == instances_.size();
-    if (last) input.facesReady({&g});
+    if (last) input.facesReady(faces);
     // The instance's triangles in each band they reach, drawn by the bands at once.
     bandTriangles_.build(
-        g.triangles.size() - first, bands, threads, [&](size_t t, int& top, int& bottom) {
-          const FixedPoint* v = g.triangles[first + t].v;
+        segments, bands, threads,
+        [&](size_t s, size_t t, int& top, int& bottom) {
+          const FixedPoint* v = parts[s].triangles[t].v;
           const SampleRect r = sampleBounds(v[0], v[1], v[2], fb.width(), fb.height());
           top = r.minY;
           bottom = r.maxY;
           return !r.empty();
-        });
+        },
+        [&](size_t s, size_t t) { return &parts[s].triangles[t]; });
     threads.forEach(size_t(bands.count()), [&](size_t b) {
-      const uint32_t* t = bandTriangles_.items(int(b));
+      const ScreenTriangle* const* t = bandTriangles_.items(int(b));
       for (size_t k = 0; k < bandTriangles_.size(int(b)); ++k)
-        bandRasterizers_[b].drawTriangle(g.triangles[first + t[k]], bandStats_[b]);
+        bandRasterizers_[b].drawTriangle(*t[k], bandStats_[b]);
       if (last) finishBand(b);
     });
   }

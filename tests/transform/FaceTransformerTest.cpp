@@ -1,7 +1,8 @@
 // The transform (FaceTransformer, the GeometrySource the algorithms pull faces from) against
 // the transform one face at a time (test::FaceByFace): by batch and by instance, instances wholly
 // outside the view, each instance's nearest depth and sample area, and the faces it drops before
-// their depths: those covering no sample centre and those a TriangleFilter hides.
+// their depths: those covering no sample centre and those a TriangleFilter hides; and an
+// instance's parts on several threads against its geometry on one.
 
 #include <gtest/gtest.h>
 
@@ -18,6 +19,7 @@
 #include "support/FaceByFace.hpp"
 #include "support/TestMeshes.hpp"
 #include "support/TestSupport.hpp"
+#include "zrender/base/Threads.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/raster/RasterRules.hpp"
 #include "zrender/transform/FaceTransformer.hpp"
@@ -439,6 +441,77 @@ TEST(FaceTransformer, FilterSeesTheFaceAsDrawnAndDropsOnlyWhatItRejects) {
   EXPECT_GT(notAsked, 10u);
   EXPECT_EQ(actual.faces.size(), expected.faces.size() - dropped);
   EXPECT_EQ(expected.counters.backfaceCulled, actual.counters.backfaceCulled);
+}
+
+// Hides every face whose id is a multiple of 5: the same verdict from any thread.
+class EveryFifthFilter : public TriangleFilter {
+ public:
+  bool hidden(const FixedPoint*, float, uint32_t faceId) override { return faceId % 5 == 0; }
+};
+
+// `parts` one after another as one geometry: each part's indices moved by what came before it.
+FrameGeometry joinParts(const std::vector<FrameGeometry>& parts) {
+  FrameGeometry out;
+  for (const FrameGeometry& part : parts) {
+    const uint32_t vertices = uint32_t(out.vertices.size()), faces = uint32_t(out.faces.size()),
+                   triangles = uint32_t(out.triangles.size());
+    out.vertices.insert(out.vertices.end(), part.vertices.begin(), part.vertices.end());
+    for (ScreenFace face : part.faces) {
+      face.firstVertex += vertices;
+      face.firstTriangle += triangles;
+      out.faces.push_back(face);
+    }
+    for (ScreenTriangle t : part.triangles) {
+      t.face += faces;
+      out.triangles.push_back(t);
+    }
+    out.counters += part.counters;
+  }
+  return out;
+}
+
+TEST(FaceTransformer, InstancePartsOnSeveralThreadsJoinToOneThreadsInstance) {
+  // A floor of 4900 faces (two chunks of the transform on several threads) in a grid that
+  // crosses the near plane and leaves the image, with and without culling and a filter: an
+  // instance's parts, joined, are its geometry on one thread, and so are its parts on one
+  // thread (the default: a single part).
+  std::vector<Vec3> p;
+  std::vector<std::vector<int>> f;
+  addTiltedFloor(70, true, p, f);
+  SceneSettings s = test::tinySettings(90);
+  s.grid = Grid{{3, 1, 2}, {4.0, 0.0, 5.0}};
+  const Scene scene = makeScene(s, test::makeMesh(p, f));
+  const Camera camera = floorGridCamera(s, scene, Vec3(0.3, 0.2, 1.0));
+  EveryFifthFilter filter;
+  for (bool cull : {true, false}) {
+    for (TriangleFilter* asked :
+         {static_cast<TriangleFilter*>(nullptr), static_cast<TriangleFilter*>(&filter)}) {
+      for (int n : {1, 2, 3}) {
+        FaceTransformer one(scene, 1, cull);
+        one.beginFrame(camera);
+        const Threads threads(n);
+        FaceTransformer several(scene, 1, cull);
+        several.setThreads(&threads);
+        several.beginFrame(camera);
+        size_t kept = 0;
+        for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
+          FrameGeometry expected;
+          one.pullInstance(k, expected, asked);
+          std::vector<FrameGeometry> parts(7);  // more than it needs: resized
+          several.pullInstanceParts(k, parts, asked);
+          if (n > 1 && !expected.faces.empty()) EXPECT_GT(parts.size(), 1u);
+          if (n == 1) EXPECT_EQ(parts.size(), 1u);
+          const std::string what = std::string(cull ? "culling" : "no culling") +
+                                   (asked ? ", filter" : "") + ", " + std::to_string(n) +
+                                   " threads, instance " + std::to_string(k);
+          expectSameGeometry(expected, joinParts(parts), what);
+          EXPECT_EQ(expected.counters.filtered, joinParts(parts).counters.filtered) << what;
+          kept += expected.faces.size();
+        }
+        EXPECT_GT(kept, 4900u);  // not vacuous: more than one instance's worth of faces
+      }
+    }
+  }
 }
 
 }  // namespace

@@ -37,6 +37,14 @@ struct TransformCounters {
   uint64_t clippedAway = 0;     // triangles_clipped_away: outside near/far or the view
   uint64_t degenerate = 0;      // zero area after snapping, fewer than 3 corners, non-simple
   uint64_t filtered = 0;        // dropped by a TriangleFilter's hidden tiles (HiddenTiles)
+
+  TransformCounters& operator+=(const TransformCounters& o) {
+    backfaceCulled += o.backfaceCulled;
+    clippedAway += o.clippedAway;
+    degenerate += o.degenerate;
+    filtered += o.filtered;
+    return *this;
+  }
 };
 
 // The arrays of a frame's geometry: written in full after they grow (UninitializedAllocator).

@@ -134,22 +134,25 @@ class BandPlacer {
   std::vector<ChunkRange> chunks_;
 };
 
-// The items of each band, as BandPlacer places them.
+// The items of each band, as BandPlacer places them: itemOf(segment, i) for item i of a
+// segment (an index, a pointer).
+template <class Item>
 class BandLists {
  public:
-  template <typename RowsOf>
-  void build(size_t n, const RowBands& bands, const Threads& threads, const RowsOf& rowsOf) {
-    placer_.place(
-        n, bands, threads, rowsOf, [&](uint32_t total) { items_.resize(total); },
-        [&](size_t i, uint32_t k) { items_[k] = uint32_t(i); });
+  template <typename RowsOf, typename ItemOf>
+  void build(const std::vector<size_t>& segments, const RowBands& bands, const Threads& threads,
+             const RowsOf& rowsOf, const ItemOf& itemOf) {
+    placer_.placeSegments(
+        segments, bands, threads, rowsOf, [&](uint32_t total) { items_.resize(total); },
+        [&](size_t segment, size_t i, uint32_t k) { items_[k] = itemOf(segment, i); });
   }
 
-  const uint32_t* items(int band) const { return items_.data() + placer_.start(band); }
+  const Item* items(int band) const { return items_.data() + placer_.start(band); }
   size_t size(int band) const { return placer_.start(band + 1) - placer_.start(band); }
 
  private:
   BandPlacer placer_;
-  std::vector<uint32_t> items_;
+  std::vector<Item> items_;
 };
 
 }  // namespace zrender

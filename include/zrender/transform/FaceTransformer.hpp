@@ -40,6 +40,9 @@ class FaceTransformer : public GeometrySource {
   void pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) override;
   void pullInstance(uint32_t instance, FrameGeometry& out,
                     TriangleFilter* filter = nullptr) override;
+  // On several threads, the parts are the chunks of pullInstance().
+  void pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
+                         TriangleFilter* filter) override;
   void pullBatch(uint32_t batch, FrameGeometry& out) override;
   void prefetchBatch(uint32_t batch) const override;
   // With several threads, the time of the batches they pulled at once counts divided by their
@@ -61,6 +64,10 @@ class FaceTransformer : public GeometrySource {
   // thread at once.
   void pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
                     std::vector<const FrameGeometry*>* parts = nullptr);
+  // The chunks of pullParallel(), into `chunks` (grown as needed; the first ones used, each
+  // cleared first); returns their number.
+  uint32_t transformChunks(int64_t instance, TriangleFilter* filter,
+                           std::vector<FrameGeometry>& chunks);
   // A chunk's part of pullAllParallel: faces [faceBegin, faceEnd) of `instance`, whose
   // vertices `vertices` holds, by `assembler`.
   void assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,

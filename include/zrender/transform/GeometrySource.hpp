@@ -74,6 +74,17 @@ class GeometrySource {
   // hidden are left out (counted in out.counters.filtered, or dropped uncounted by hidden()).
   virtual void pullInstance(uint32_t instance, FrameGeometry& out,
                             TriangleFilter* filter = nullptr) = 0;
+  // The same, but the faces left in parts, as pullAllParts() leaves them, rather than appended
+  // to one geometry: `parts` is resized to their number and each part cleared and filled, its
+  // counters included. For algorithms that draw instance after instance on several threads,
+  // which keep each instance's parts: the join would be a copy of every face, vertex and
+  // triangle. By default one part, filled by pullInstance().
+  virtual void pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
+                                 TriangleFilter* filter) {
+    parts.resize(1);
+    parts[0].clear();
+    pullInstance(instance, parts[0], filter);
+  }
   // The faces of batch `batch` of the FaceBatches the algorithm's prepare() returned, in order.
   // A transform given several threads takes pulls of batches from all of them at once (each
   // into its own `out`), and counts their time divided by the threads' number.

@@ -20,7 +20,8 @@ namespace zrender {
 // the file keeps most of its culling within one instance. With several threads, the image is cut
 // into bands of rows, each with a pyramid of its own: an instance is transformed by all the
 // threads, a face dropped when every band it reaches proves it hidden, then the bands draw its
-// triangles at once, before the next instance.
+// triangles at once, before the next instance. Each instance's faces stay in the parts the
+// threads transformed them into (GeometrySource::pullInstanceParts).
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }
@@ -34,7 +35,10 @@ class HierarchicalAlgorithm : public VisibilityAlgorithm {
   HzbRasterizer rasterizer_;
   TriangleBands bands_;
   std::vector<HzbRasterizer> bandRasterizers_;  // several threads: each band's
-  BandLists bandTriangles_;                     // an instance's triangles in each band
+  // Several threads: each instance's faces in parts (nearest first), and the last one's
+  // triangles in each band.
+  std::vector<std::vector<FrameGeometry>> instanceParts_;
+  BandLists<const ScreenTriangle*> bandTriangles_;
   std::vector<RenderStats> bandStats_, threadStats_;
   std::vector<uint32_t> instances_;  // this frame's instance order, nearest first
 };
