@@ -40,13 +40,14 @@ void FaceTransformer::beginFrame(const Camera& camera) {
     for (Worker& w : workers_) {
       w.assembler.beginFrame(camera.width, camera.height, layout_.slotPositions(), mvp_);
       w.batchMs = 0.0;
+      w.sideMs = 0.0;
     }
   }
 }
 
 double FaceTransformer::transformMs() const {
   double ms = transformMs_;
-  for (const Worker& w : workers_) ms += w.batchMs / double(workers_.size());
+  for (const Worker& w : workers_) ms += (w.batchMs - w.sideMs) / double(workers_.size());
   return ms;
 }
 
@@ -135,7 +136,8 @@ void FaceTransformer::pullAllParts(FrameGeometry& out, std::vector<const FrameGe
 }
 
 uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filter,
-                                          std::vector<FrameGeometry>& chunks) {
+                                          std::vector<FrameGeometry>& chunks,
+                                          const SideJobs& alongside) {
   const Threads& threads = *threads_;
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   // A grid: one chunk per instance, each projecting its own vertices. One instance: its
@@ -156,10 +158,17 @@ uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filt
       projectSlots(only, begin, end, instanceState_.data(), instanceWindow_.data());
     });
   }
-  threads.forEach(count, [&](size_t c) {
+  // The side jobs first: they are the longer tasks (a band's drawing).
+  threads.forEach(alongside.count + count, [&](size_t j) {
+    Worker& w = workers_[size_t(threads.slot())];
+    if (j < alongside.count) {
+      ScopedTimer side(w.sideMs);
+      alongside.run(j);
+      return;
+    }
+    const size_t c = j - alongside.count;
     FrameGeometry& chunk = chunks[c];
     chunk.clear();
-    Worker& w = workers_[size_t(threads.slot())];
     const uint32_t k = single ? only : uint32_t(c);
     const InstanceView view = single ? onlyView : viewOfInstance(k);
     if (view.outside) {
@@ -219,13 +228,14 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
 }
 
 void FaceTransformer::pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
-                                        TriangleFilter* filter) {
+                                        TriangleFilter* filter, const SideJobs& alongside) {
   if (!(threads_ && threads_->parallel())) {
-    GeometrySource::pullInstanceParts(instance, parts, filter);
+    GeometrySource::pullInstanceParts(instance, parts, filter, alongside);
     return;
   }
+  // The side jobs' time, counted in the workers' sideMs, comes off this (transformMs()).
   ScopedTimer timer(transformMs_);
-  parts.resize(transformChunks(instance, filter, parts));
+  parts.resize(transformChunks(instance, filter, parts, alongside));
 }
 
 void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter) {

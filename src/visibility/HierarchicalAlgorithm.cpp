@@ -43,13 +43,15 @@ class PyramidFilter : public TriangleFilter {
   SampleRect marked_;                 // where hiddenTiles_ may hold nonzero bytes
 };
 
-// The transform's filter with several threads, asked by them all at once: a triangle face is
-// dropped when the pyramid of every band it reaches proves it hidden there.
-class BandsFilter : public TriangleFilter {
+// The transform's filter with several threads: the tiles of each band's pyramid where an
+// instance's nearest depth is behind, marked before the instance's faces; no face is asked
+// alone, as the bands draw the instance before while the faces are transformed (the bands'
+// tests drop such faces then).
+class BandTilesFilter : public TriangleFilter {
  public:
-  BandsFilter(const std::vector<HzbRasterizer>& rasterizers, const RowBands& bands,
-              const FrameBuffer& fb, const Threads& threads, std::vector<RenderStats>& stats)
-      : rasterizers_(rasterizers), bands_(bands), fb_(fb), threads_(threads), stats_(stats) {
+  BandTilesFilter(const std::vector<HzbRasterizer>& rasterizers, const RowBands& bands,
+                  const FrameBuffer& fb)
+      : rasterizers_(rasterizers), bands_(bands) {
     const int tilesX = (fb.width() + DepthPyramid::kTileSize - 1) >> DepthPyramid::kTileShift;
     const int tilesY = (fb.height() + DepthPyramid::kTileSize - 1) >> DepthPyramid::kTileShift;
     hiddenTiles_.assign(size_t(tilesX) * size_t(tilesY), 0);
@@ -62,15 +64,7 @@ class BandsFilter : public TriangleFilter {
     mark(area, makeDepthKey(nearestDepth, 0));
     return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, tilesX_};
   }
-  bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) override {
-    const SampleRect r = sampleBounds(v[0], v[1], v[2], fb_.width(), fb_.height());
-    if (r.empty()) return true;
-    RenderStats ignored;  // rejects() counts each band's verdict; the face counts once
-    for (int b = bands_.bandOf(r.minY); b <= bands_.bandOf(r.maxY); ++b)
-      if (!rasterizers_[size_t(b)].rejects(v, nearestDepth, faceId, ignored)) return false;
-    ++stats_[size_t(threads_.slot())].trianglesHzbCulled;
-    return true;
-  }
+  bool hidden(const FixedPoint*, float, uint32_t) override { return false; }
 
  private:
   // Sets the tiles of `area` to whether `key` is behind them (0: to 0).
@@ -86,9 +80,6 @@ class BandsFilter : public TriangleFilter {
 
   const std::vector<HzbRasterizer>& rasterizers_;
   const RowBands& bands_;
-  const FrameBuffer& fb_;
-  const Threads& threads_;
-  std::vector<RenderStats>& stats_;   // per thread
   std::vector<uint8_t> hiddenTiles_;  // per tile of the image
   int tilesX_ = 0;
   SampleRect marked_;  // where hiddenTiles_ may hold nonzero bytes
@@ -159,30 +150,35 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
   for (int b = 0; b < bands.count(); ++b)
     bandRasterizers_[size_t(b)].begin(fb, bands.rowBegin(b), bands.rowEnd(b));
   bandStats_.assign(size_t(bands.count()), RenderStats());
-  threadStats_.assign(size_t(threads.count()), RenderStats());
-  BandsFilter filter(bandRasterizers_, bands, fb, threads, threadStats_);
-  const auto finishBand = [&](size_t b) {
+  BandTilesFilter filter(bandRasterizers_, bands, fb);
+  // Band b's triangles of the instance listed last; with `last`, the band is then finished and
+  // shaded by the thread that drew it, while its keys are in that thread's cache.
+  const auto drawBand = [&](size_t b, bool last) {
+    const ScreenTriangle* const* t = bandTriangles_.items(int(b));
+    for (size_t k = 0; k < bandTriangles_.size(int(b)); ++k)
+      bandRasterizers_[b].drawTriangle(*t[k], bandStats_[b]);
+    if (!last) return;
     bandRasterizers_[b].finish();
     input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
   };
+  // Each instance is drawn while the next one is transformed, among its tasks: the bands that
+  // hold its triangles, each a task. The next one's filter marks its tiles before, from the
+  // pyramids as the instances before the one being drawn left them.
   instanceParts_.resize(instances_.size());
   FaceParts faces;  // every part of the instances pulled so far
   std::vector<size_t> segments;
+  std::vector<size_t> busyBands;  // bands with triangles of the instance listed last
   for (size_t i = 0; i < instances_.size(); ++i) {
     std::vector<FrameGeometry>& parts = instanceParts_[i];
-    input.source.pullInstanceParts(instances_[i], parts, i > 0 ? &filter : nullptr);
+    const SideJobs drawLast{busyBands.size(), [&](size_t j) { drawBand(busyBands[j], false); }};
+    input.source.pullInstanceParts(instances_[i], parts, i > 0 ? &filter : nullptr, drawLast);
     segments.clear();
     for (const FrameGeometry& part : parts) {
       faces.push_back(&part);
       segments.push_back(part.triangles.size());
       g.counters += part.counters;
     }
-    // After the last instance's pull the parts hold every face that can be in the buffer:
-    // the shader prepares them now, and each band is shaded by the thread that finishes it,
-    // while its keys are in that thread's cache, not read back afterwards.
-    const bool last = i + 1 == instances_.size();
-    if (last) input.facesReady(faces);
-    // The instance's triangles in each band they reach, drawn by the bands at once.
+    // The instance's triangles in each band they reach.
     bandTriangles_.build(
         segments, bands, threads,
         [&](size_t s, size_t t, int& top, int& bottom) {
@@ -193,16 +189,15 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
           return !r.empty();
         },
         [&](size_t s, size_t t) { return &parts[s].triangles[t]; });
-    threads.forEach(size_t(bands.count()), [&](size_t b) {
-      const ScreenTriangle* const* t = bandTriangles_.items(int(b));
-      for (size_t k = 0; k < bandTriangles_.size(int(b)); ++k)
-        bandRasterizers_[b].drawTriangle(*t[k], bandStats_[b]);
-      if (last) finishBand(b);
-    });
+    busyBands.clear();
+    for (int b = 0; b < bands.count(); ++b)
+      if (bandTriangles_.size(b) > 0) busyBands.push_back(size_t(b));
   }
-  if (instances_.empty()) threads.forEach(size_t(bands.count()), finishBand);
+  // The parts hold every face that can be in the buffer: the shader prepares them, then the
+  // bands draw the last instance and are shaded.
+  input.facesReady(faces);
+  threads.forEach(size_t(bands.count()), [&](size_t b) { drawBand(b, true); });
   for (const RenderStats& s : bandStats_) stats += s;
-  for (const RenderStats& s : threadStats_) stats += s;
   stats.trianglesHzbCulled += g.counters.filtered;
 }
 

@@ -1,11 +1,12 @@
 // Every thread count gives the buffers of one thread (docs/design.md, Threads): color, depth
 // and id of every algorithm with 2, 3 and 7 threads equal those with 1, on the reference
-// models, polygons, a grid, random soups, every shading mode and MSAA 4.
+// models, polygons, grids, random soups, every shading mode and MSAA 4.
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <memory>
+#include <set>
 #include <string>
 
 #include "support/TestSupport.hpp"
@@ -92,6 +93,24 @@ TEST(ThreadCounts, SmallCrowd) {
   const auto crowd = projectScene("crowd", 150);
   if (!crowd) GTEST_SKIP() << "bunny is not linked under models/";
   expectSameForEveryThreadCount(*crowd, "crowd", {2, 7});
+}
+
+TEST(ThreadCounts, GridWhoseEveryInstanceIsSeen) {
+  // Random soups side by side, each overlapping its neighbours: every instance, from the
+  // hierarchical z-buffer's first (nearest) to its last (farthest), has samples of its own in
+  // the image, so an instance drawn wrongly or not at all on several threads shows.
+  SceneSettings s = test::tinySettings(97);
+  s.grid = Grid{{4, 3, 1}, {1.0, 1.0, 0.0}};
+  const Scene scene = makeScene(s, test::randomSoup(5, 120, true));
+  const test::Rendered one = renderWith(scene, "zbuffer", 1);
+  std::set<uint32_t> seen;
+  const uint32_t nf = uint32_t(scene.mesh->faceCount());
+  for (int y = 0; y < one.buffer.height(); ++y)
+    for (int x = 0; x < one.buffer.width(); ++x)
+      if (keyFaceId(one.buffer.row(y)[x]) != kBackgroundId)
+        seen.insert(keyFaceId(one.buffer.row(y)[x]) / nf);
+  EXPECT_EQ(seen.size(), size_t(scene.instanceCount()));
+  expectSameForEveryThreadCount(scene, "grid of soups");
 }
 
 TEST(ThreadCounts, RandomSoups) {

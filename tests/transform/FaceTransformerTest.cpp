@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -474,7 +475,7 @@ TEST(FaceTransformer, InstancePartsOnSeveralThreadsJoinToOneThreadsInstance) {
   // A floor of 4900 faces (two chunks of the transform on several threads) in a grid that
   // crosses the near plane and leaves the image, with and without culling and a filter: an
   // instance's parts, joined, are its geometry on one thread, and so are its parts on one
-  // thread (the default: a single part).
+  // thread (the default: a single part); the side jobs given to the pull run once each.
   std::vector<Vec3> p;
   std::vector<std::vector<int>> f;
   addTiltedFloor(70, true, p, f);
@@ -498,9 +499,17 @@ TEST(FaceTransformer, InstancePartsOnSeveralThreadsJoinToOneThreadsInstance) {
           FrameGeometry expected;
           one.pullInstance(k, expected, asked);
           std::vector<FrameGeometry> parts(7);  // more than it needs: resized
-          several.pullInstanceParts(k, parts, asked);
-          if (n > 1 && !expected.faces.empty()) EXPECT_GT(parts.size(), 1u);
-          if (n == 1) EXPECT_EQ(parts.size(), 1u);
+          // Jobs of the caller's among the pull's tasks: each runs once.
+          std::vector<std::atomic<int>> ran(5);
+          several.pullInstanceParts(k, parts, asked,
+                                    SideJobs{ran.size(), [&](size_t j) { ++ran[j]; }});
+          for (const std::atomic<int>& r : ran) EXPECT_EQ(r.load(), 1);
+          if (n > 1 && !expected.faces.empty()) {
+            EXPECT_GT(parts.size(), 1u);
+          }
+          if (n == 1) {
+            EXPECT_EQ(parts.size(), 1u);
+          }
           const std::string what = std::string(cull ? "culling" : "no culling") +
                                    (asked ? ", filter" : "") + ", " + std::to_string(n) +
                                    " threads, instance " + std::to_string(k);

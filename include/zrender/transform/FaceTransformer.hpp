@@ -40,9 +40,10 @@ class FaceTransformer : public GeometrySource {
   void pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) override;
   void pullInstance(uint32_t instance, FrameGeometry& out,
                     TriangleFilter* filter = nullptr) override;
-  // On several threads, the parts are the chunks of pullInstance().
+  // On several threads, the parts are the chunks of pullInstance(), and the side jobs tasks of
+  // the chunks' loop.
   void pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
-                         TriangleFilter* filter) override;
+                         TriangleFilter* filter, const SideJobs& alongside = SideJobs()) override;
   void pullBatch(uint32_t batch, FrameGeometry& out) override;
   void prefetchBatch(uint32_t batch) const override;
   // With several threads, the time of the batches they pulled at once counts divided by their
@@ -65,9 +66,10 @@ class FaceTransformer : public GeometrySource {
   void pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
                     std::vector<const FrameGeometry*>* parts = nullptr);
   // The chunks of pullParallel(), into `chunks` (grown as needed; the first ones used, each
-  // cleared first); returns their number.
+  // cleared first), with `alongside` among the chunks' tasks; returns their number.
   uint32_t transformChunks(int64_t instance, TriangleFilter* filter,
-                           std::vector<FrameGeometry>& chunks);
+                           std::vector<FrameGeometry>& chunks,
+                           const SideJobs& alongside = SideJobs());
   // A chunk's part of pullAllParallel: faces [faceBegin, faceEnd) of `instance`, whose
   // vertices `vertices` holds, by `assembler`.
   void assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,
@@ -96,6 +98,7 @@ class FaceTransformer : public GeometrySource {
     std::vector<VertexState> state;
     std::vector<Vec3> window;
     double batchMs = 0.0;
+    double sideMs = 0.0;  // in side jobs, inside the transform's time
   };
   std::vector<Worker> workers_;
   std::vector<FrameGeometry> chunks_;

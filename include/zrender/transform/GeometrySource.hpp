@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "zrender/raster/FrameGeometry.hpp"
@@ -35,6 +37,14 @@ class TriangleFilter {
   // DepthPlane::minDepth() will be. True drops the face. A transform on several threads asks
   // from all of them at once.
   virtual bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) = 0;
+};
+
+// Jobs of the caller's that a pull runs among its own tasks (GeometrySource::pullInstanceParts):
+// run(j) for every j in [0, count), on any of the threads, at the same time as each other and as
+// the pull's work after its TriangleFilter::beginInstance().
+struct SideJobs {
+  size_t count = 0;
+  std::function<void(size_t)> run;
 };
 
 // The groups of faces an algorithm pulls one at a time (GeometrySource::pullBatch): batch b is
@@ -78,9 +88,12 @@ class GeometrySource {
   // to one geometry: `parts` is resized to their number and each part cleared and filled, its
   // counters included. For algorithms that draw instance after instance on several threads,
   // which keep each instance's parts: the join would be a copy of every face, vertex and
-  // triangle. By default one part, filled by pullInstance().
+  // triangle. `alongside` runs among the pull's tasks (the previous instance's drawing), and
+  // its time is not transform time. By default one part, filled by pullInstance() after the
+  // side jobs, one after another.
   virtual void pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
-                                 TriangleFilter* filter) {
+                                 TriangleFilter* filter, const SideJobs& alongside = SideJobs()) {
+    for (size_t j = 0; j < alongside.count; ++j) alongside.run(j);
     parts.resize(1);
     parts[0].clear();
     pullInstance(instance, parts[0], filter);

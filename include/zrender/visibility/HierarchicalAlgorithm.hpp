@@ -39,7 +39,7 @@ class HierarchicalAlgorithm : public VisibilityAlgorithm {
   // triangles in each band.
   std::vector<std::vector<FrameGeometry>> instanceParts_;
   BandLists<const ScreenTriangle*> bandTriangles_;
-  std::vector<RenderStats> bandStats_, threadStats_;
+  std::vector<RenderStats> bandStats_;
   std::vector<uint32_t> instances_;  // this frame's instance order, nearest first
 };
 
