@@ -28,4 +28,4 @@ ninja -C "$build"
 # could not match (1 run in about 70, 2026-11-26).
 export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1:ignore_noninstrumented_modules=1:report_atomic_races=0:history_size=7:suppressions=$root/tools/tsan.supp}
 cd "$build"
-ctest --output-on-failure -j "$jobs" -R 'ThreadCounts|ThreadsOption|TurntableThreads|PngWriter|SideBySide|SceneFiles|FrameMemory|ObjParser' "$@"
+ctest --output-on-failure -j "$jobs" -R 'ThreadCounts|ThreadsOption|TurntableThreads|PngWriter|SideBySide|SceneFiles|FrameMemory|ObjParser|FaceTransformer' "$@"
