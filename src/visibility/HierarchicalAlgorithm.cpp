@@ -151,15 +151,11 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
     bandRasterizers_[size_t(b)].begin(fb, bands.rowBegin(b), bands.rowEnd(b));
   bandStats_.assign(size_t(bands.count()), RenderStats());
   BandTilesFilter filter(bandRasterizers_, bands, fb);
-  // Band b's triangles of the instance listed last; with `last`, the band is then finished and
-  // shaded by the thread that drew it, while its keys are in that thread's cache.
-  const auto drawBand = [&](size_t b, bool last) {
+  // Band b's triangles of the instance listed last.
+  const auto drawBand = [&](size_t b) {
     const ScreenTriangle* const* t = bandTriangles_.items(int(b));
     for (size_t k = 0; k < bandTriangles_.size(int(b)); ++k)
       bandRasterizers_[b].drawTriangle(*t[k], bandStats_[b]);
-    if (!last) return;
-    bandRasterizers_[b].finish();
-    input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
   };
   // Each instance is drawn while the next one is transformed, among its tasks: the bands that
   // hold its triangles, each a task. The next one's filter marks its tiles before, from the
@@ -170,7 +166,7 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
   std::vector<size_t> busyBands;  // bands with triangles of the instance listed last
   for (size_t i = 0; i < instances_.size(); ++i) {
     std::vector<FrameGeometry>& parts = instanceParts_[i];
-    const SideJobs drawLast{busyBands.size(), [&](size_t j) { drawBand(busyBands[j], false); }};
+    const SideJobs drawLast{busyBands.size(), [&](size_t j) { drawBand(busyBands[j]); }};
     input.source.pullInstanceParts(instances_[i], parts, i > 0 ? &filter : nullptr, drawLast);
     segments.clear();
     for (const FrameGeometry& part : parts) {
@@ -194,9 +190,14 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
       if (bandTriangles_.size(b) > 0) busyBands.push_back(size_t(b));
   }
   // The parts hold every face that can be in the buffer: the shader prepares them, then the
-  // bands draw the last instance and are shaded.
+  // bands draw the last instance and are finished and shaded, each by the thread that drew it,
+  // while its keys are in that thread's cache.
   input.facesReady(faces);
-  threads.forEach(size_t(bands.count()), [&](size_t b) { drawBand(b, true); });
+  threads.forEach(size_t(bands.count()), [&](size_t b) {
+    if (!instances_.empty()) drawBand(b);
+    bandRasterizers_[b].finish();
+    input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
+  });
   for (const RenderStats& s : bandStats_) stats += s;
   stats.trianglesHzbCulled += g.counters.filtered;
 }

@@ -19,9 +19,9 @@ namespace zrender {
 // (TriangleBands), each tested against the pyramid again. A model whose faces come front to back in
 // the file keeps most of its culling within one instance. With several threads, the image is cut
 // into bands of rows, each with a pyramid of its own: an instance is transformed by all the
-// threads, a face dropped when every band it reaches proves it hidden, then the bands draw its
-// triangles at once, before the next instance. Each instance's faces stay in the parts the
-// threads transformed them into (GeometrySource::pullInstanceParts).
+// threads while the bands draw the one before it (GeometrySource::pullInstanceParts and its
+// side jobs), its faces left in the parts the threads transformed them into, and the filter
+// drops only the faces in tiles where the instance's nearest depth is behind.
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }
