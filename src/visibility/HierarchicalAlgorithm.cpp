@@ -65,6 +65,7 @@ class BandTilesFilter : public TriangleFilter {
     return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, tilesX_};
   }
   bool hidden(const FixedPoint*, float, uint32_t) override { return false; }
+  bool asksFaces() const override { return false; }
 
  private:
   // Sets the tiles of `area` to whether `key` is behind them (0: to 0).

@@ -53,7 +53,7 @@ class FaceAssembler {
   // The vertices the next faces refer to, and what may drop them early.
   void setVertices(const VertexView& view) { view_ = view; }
   void setFilter(TriangleFilter* filter, HiddenTiles hidden) {
-    filter_ = filter;
+    filter_ = filter && filter->asksFaces() ? filter : nullptr;
     hiddenTiles_ = hidden;
   }
 

@@ -37,6 +37,9 @@ class TriangleFilter {
   // DepthPlane::minDepth() will be. True drops the face. A transform on several threads asks
   // from all of them at once.
   virtual bool hidden(const FixedPoint* v, float nearestDepth, uint32_t faceId) = 0;
+  // Whether hidden() is asked at all (false: only beginInstance()'s tiles drop faces, and the
+  // transform spares each face the call and its nearest depth).
+  virtual bool asksFaces() const { return true; }
 };
 
 // Jobs of the caller's that a pull runs among its own tasks (GeometrySource::pullInstanceParts):
