@@ -6,13 +6,12 @@ namespace zrender {
 
 namespace {
 
-// Stable counting sort of `in` by row (keyOf(item) in [0, rows)) into `out`; `bucket` receives
-// the rows + 1 offsets. `moved(i, j)` is told that in[i] went to out[j].
+// Stable counting sort of `in` by row (keyOf(item) in [0, rows)) into `out`. `bucket` holds
+// the number of items of each row r at bucket[r + 1] (bucket[0] = 0), counted as the items were
+// made, and receives the rows + 1 offsets. `moved(i, j)` is told that in[i] went to out[j].
 template <typename T, typename KeyOf, typename Moved>
 void sortByRow(const std::vector<T>& in, int rows, KeyOf keyOf, std::vector<T>& out,
                std::vector<uint32_t>& bucket, Moved moved) {
-  bucket.assign(size_t(rows) + 1, 0);
-  for (const T& item : in) ++bucket[size_t(keyOf(item)) + 1];
   for (int r = 0; r < rows; ++r) bucket[size_t(r) + 1] += bucket[size_t(r)];
   out.resize(in.size());
   // bucket[r] serves as the cursor of row r, then is shifted back into place.
@@ -26,19 +25,6 @@ void sortByRow(const std::vector<T>& in, int rows, KeyOf keyOf, std::vector<T>& 
 }
 
 }  // namespace
-
-bool faceRows(const FrameGeometry& g, uint32_t f, int height, int& first, int& last) {
-  const ScreenFace& face = g.faces[f];
-  const FixedPoint* v = g.vertices.data() + face.firstVertex;
-  int32_t minY = v[0].y, maxY = v[0].y;
-  for (uint32_t k = 1; k < face.vertexCount; ++k) {
-    minY = std::min(minY, v[k].y);
-    maxY = std::max(maxY, v[k].y);
-  }
-  first = std::max(firstSampleAtOrAfter(minY), 0);
-  last = std::min(lastSampleAtOrBefore(maxY), height - 1);
-  return first <= last;
-}
 
 void PolygonTables::build(const FrameGeometry& g, int width, int height) {
   begin(height, 0, height);
@@ -62,7 +48,10 @@ void PolygonTables::begin(int height, int bandBegin, int bandEnd) {
   unsortedPolygons_.clear();
   unsortedEdges_.clear();
   triangleCount = 0;
-  polygonsEnding.assign(size_t(std::max(rowEnd_ - rowBegin, 0)), 0);
+  const size_t rows = size_t(std::max(rowEnd_ - rowBegin, 0));
+  polygonsEnding.assign(rows, 0);
+  polygonBucket.assign(rows + 1, 0);
+  edgeBucket.assign(rows + 1, 0);
 }
 
 void PolygonTables::classify(const FrameGeometry& g, uint32_t f, int width) {
@@ -95,6 +84,7 @@ void PolygonTables::classify(const FrameGeometry& g, uint32_t f, int width) {
     const int32_t last = std::min(imageLast, rowEnd - 1);
     if (first > last) continue;
     unsortedEdges_.push_back(ClassifiedEdge{top, bottom, first, last, polygon});
+    ++edgeBucket[size_t(first - rowBegin) + 1];
     topRow = std::min(topRow, first);
     bottomRow = std::max(bottomRow, last);
   }
@@ -103,6 +93,7 @@ void PolygonTables::classify(const FrameGeometry& g, uint32_t f, int width) {
   unsortedPolygons_.push_back(ClassifiedPolygon{g.triangles[face.firstTriangle].plane, face.id,
                                                 topRow, bottomRow, 0, edgeCount});
   ++polygonsEnding[size_t(bottomRow - rowBegin)];
+  ++polygonBucket[size_t(topRow - rowBegin) + 1];
   if (imageTop >= rowBegin) triangleCount += face.triangleCount;
 }
 

@@ -70,13 +70,14 @@ void setDepthRange(DepthPlane& plane, const Vec3* window, uint32_t count) {
 // Appends a face (its snapped corners and positively oriented pieces) to the frame.
 void pushFace(uint32_t faceId, const DepthPlane& plane, bool frontFacing, const FixedPoint* corners,
               uint32_t cornerCount, const std::array<uint32_t, 3>* pieces, uint32_t pieceCount,
-              FrameGeometry& out) {
+              FaceRowSpan rows, FrameGeometry& out) {
   ScreenFace face;
   face.id = faceId;
   face.firstVertex = uint32_t(out.vertices.size());
-  face.vertexCount = cornerCount;
+  face.vertexCount = uint16_t(cornerCount);
   face.firstTriangle = uint32_t(out.triangles.size());
-  face.triangleCount = pieceCount;
+  face.triangleCount = uint16_t(pieceCount);
+  face.rows = rows;
   face.frontFacing = frontFacing;
   const uint32_t faceIndex = uint32_t(out.faces.size());
   // One by one: the range insert is a call, and faces have few corners.
@@ -181,12 +182,13 @@ void FaceAssembler::appendTriangle(uint32_t faceId, FaceCorners corners, FrameGe
   const FixedPoint& b = view_.state[corners[1]].snapped;
   const FixedPoint& c = view_.state[corners[2]].snapped;
   const int64_t area = orient2d(a, b, c);
-  if (droppedBeforeDepths(a, b, c, area, out)) return;
-  appendTriangleDepths(faceId, corners, area < 0, out);
+  FaceRowSpan rows;
+  if (droppedBeforeDepths(a, b, c, area, out, rows)) return;
+  appendTriangleDepths(faceId, corners, area < 0, rows, out);
 }
 
 void FaceAssembler::appendTriangleDepths(uint32_t faceId, FaceCorners corners, bool frontFacing,
-                                         FrameGeometry& out) {
+                                         FaceRowSpan rows, FrameGeometry& out) {
   const FixedPoint points[3] = {view_.state[corners[0]].snapped, view_.state[corners[1]].snapped,
                                 view_.state[corners[2]].snapped};
   const Vec3 window[3] = {view_.window[corners[0]], view_.window[corners[1]],
@@ -199,7 +201,7 @@ void FaceAssembler::appendTriangleDepths(uint32_t faceId, FaceCorners corners, b
     return;
   }
   const std::array<uint32_t, 3> piece = orientedPiece(frontFacing);
-  pushFace(faceId, plane, frontFacing, points, 3, &piece, 1, out);
+  pushFace(faceId, plane, frontFacing, points, 3, &piece, 1, rows, out);
 }
 
 void FaceAssembler::appendClippedFace(uint32_t faceId, FaceCorners corners, uint32_t n,
@@ -262,7 +264,9 @@ void FaceAssembler::appendSnappedFace(uint32_t faceId, const DepthPlane& plane, 
                                       FrameGeometry& out) {
   TransformCounters& counters = out.counters;
   while (snapped_.size() > 1 && snapped_.back() == snapped_.front()) snapped_.pop_back();
-  if (snapped_.size() < 3) {
+  // More corners than ScreenFace counts (an OBJ face has at most 4096 before clipping, which
+  // adds fewer than this allows): not drawn, as no algorithm could draw it the same way.
+  if (snapped_.size() < 3 || snapped_.size() > kMaxScreenFaceCorners) {
     counters.degenerate += pieces;
     return;
   }
@@ -291,8 +295,13 @@ void FaceAssembler::appendSnappedFace(uint32_t faceId, const DepthPlane& plane, 
     return;
   }
 
+  int32_t minY = snapped_[0].y, maxY = snapped_[0].y;
+  for (const FixedPoint& p : snapped_) {
+    minY = std::min(minY, p.y);
+    maxY = std::max(maxY, p.y);
+  }
   pushFace(faceId, plane, frontFacing, snapped_.data(), uint32_t(snapped_.size()), pieces_.data(),
-           uint32_t(pieces_.size()), out);
+           uint32_t(pieces_.size()), faceRowSpan(minY, maxY, out.height), out);
 }
 
 }  // namespace zrender

@@ -39,6 +39,8 @@ FrameGeometry geometryOf(const std::vector<std::array<FixedPoint, 3>>& tris,
     f.firstTriangle = uint32_t(g.triangles.size());
     f.triangleCount = 1;
     f.frontFacing = true;
+    f.rows =
+        faceRowSpan(std::min({t[0].y, t[1].y, t[2].y}), std::max({t[0].y, t[1].y, t[2].y}), size);
     g.vertices.insert(g.vertices.end(), t.begin(), t.end());
     g.triangles.push_back(
         ScreenTriangle{{t[0], t[1], t[2]}, uint32_t(g.faces.size()), ids[i], planes[i]});

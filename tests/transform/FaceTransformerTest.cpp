@@ -42,6 +42,7 @@ void expectSameGeometry(const FrameGeometry& a, const FrameGeometry& b, const st
     const ScreenFace &x = a.faces[i], &y = b.faces[i];
     EXPECT_TRUE(x.id == y.id && x.firstVertex == y.firstVertex && x.vertexCount == y.vertexCount &&
                 x.firstTriangle == y.firstTriangle && x.triangleCount == y.triangleCount &&
+                x.rows.first == y.rows.first && x.rows.last == y.rows.last &&
                 x.frontFacing == y.frontFacing)
         << what << ", face " << i;
   }
@@ -125,6 +126,42 @@ TEST(FaceTransformer, BatchesGiveWhatFaceByFaceGives) {
       EXPECT_GT(expected.counters.clippedAway + expected.counters.degenerate, 0u);
       expectSameGeometry(expected, actual, cull ? "culling" : "no culling");
     }
+  }
+}
+
+TEST(FaceTransformer, EveryFaceCarriesTheSampleRowsOfItsCorners) {
+  // The rows a face records for binning (ScreenFace::rows) against those of its snapped
+  // corners, clamped to the image: on a floor that crosses the near plane and leaves the image
+  // (clipped faces, faces partly above and below it), with and without MSAA's 2 x 2 samples.
+  SceneSettings s;
+  const Scene scene = floorGridScene(s);
+  for (int scale : {1, 2}) {
+    FaceTransformer transformer(scene, scale, false, FaceBatches{});
+    const Camera camera = floorGridCamera(s, scene, Vec3(0.3, 0.2, 1.0));
+    transformer.beginFrame(camera);
+    FrameGeometry g;
+    transformer.pullAll(g);
+    ASSERT_GT(g.faces.size(), 100u);
+    size_t clampedAbove = 0, clampedBelow = 0;
+    for (const ScreenFace& face : g.faces) {
+      int64_t minY = g.vertices[face.firstVertex].y, maxY = minY;
+      for (uint32_t k = 1; k < face.vertexCount; ++k) {
+        minY = std::min<int64_t>(minY, g.vertices[face.firstVertex + k].y);
+        maxY = std::max<int64_t>(maxY, g.vertices[face.firstVertex + k].y);
+      }
+      // Rows whose centre (row + 1/2, in 1/256 units) lies in [minY, maxY].
+      const int64_t first = std::max<int64_t>(0, (minY - 128 + 255) >> 8);
+      const int64_t last = std::min<int64_t>(g.height - 1, (maxY - 128) >> 8);
+      clampedAbove += minY < 0;
+      clampedBelow += maxY >= int64_t(g.height) * 256;
+      if (first > last) {
+        EXPECT_GT(face.rows.first, face.rows.last) << "face " << face.id;
+      } else {
+        EXPECT_EQ(face.rows.first, first) << "face " << face.id;
+        EXPECT_EQ(face.rows.last, last) << "face " << face.id;
+      }
+    }
+    EXPECT_GT(clampedAbove + clampedBelow, 0u);  // not vacuous: the clamping was exercised
   }
 }
 

@@ -70,10 +70,13 @@ FrameBuffer renderHandMadeFace(const std::vector<FixedPoint>& corners,
   ScreenFace face{};
   face.id = 7;
   face.firstVertex = 0;
-  face.vertexCount = uint32_t(corners.size());
+  face.vertexCount = uint16_t(corners.size());
   face.firstTriangle = 0;
-  face.triangleCount = uint32_t(pieces.size());
+  face.triangleCount = uint16_t(pieces.size());
   face.frontFacing = true;
+  int32_t minY = corners[0].y, maxY = corners[0].y;
+  for (const FixedPoint& p : corners) minY = std::min(minY, p.y), maxY = std::max(maxY, p.y);
+  face.rows = faceRowSpan(minY, maxY, geometry.height);
   geometry.faces.push_back(face);
   for (const auto& t : pieces)
     geometry.triangles.push_back(ScreenTriangle{

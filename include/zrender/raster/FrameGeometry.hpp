@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -9,14 +10,34 @@
 
 namespace zrender {
 
+// The sample rows [first, last] of the image that a face's corners span (clamped to it):
+// what binning faces by rows needs, without reading the corners again. first > last when the
+// face reaches no row.
+struct FaceRowSpan {
+  uint16_t first, last;  // sample rows: at most 16384 pixels times 2 (MSAA 4) fit
+};
+
+// The span of a face whose corners' y lie in [minY, maxY] (fixed point) on an image of
+// `height` sample rows.
+inline FaceRowSpan faceRowSpan(int32_t minY, int32_t maxY, int height) {
+  const int first = std::max(firstSampleAtOrAfter(minY), 0);
+  const int last = std::min(lastSampleAtOrBefore(maxY), height - 1);
+  if (first > last) return FaceRowSpan{1, 0};
+  return FaceRowSpan{uint16_t(first), uint16_t(last)};
+}
+
+// The most corners a face may have after clipping (ScreenFace's counts are 16-bit).
+constexpr uint32_t kMaxScreenFaceCorners = 0xFFFF;
+
 // A face after transform, near/far clipping, snapping and culling: a polygon in fixed-point
 // sample coordinates plus its triangulation. All algorithms read the same FrameGeometry.
 struct ScreenFace {
   uint32_t id;             // face id (docs/design.md, Faces, ids and shading)
   uint32_t firstVertex;    // corners in FrameGeometry::vertices, as projected (either winding)
-  uint32_t vertexCount;    // >= 3
   uint32_t firstTriangle;  // pieces in FrameGeometry::triangles (at least one), which carry
-  uint32_t triangleCount;  // the face's depth plane
+  uint16_t triangleCount;  // the face's depth plane
+  uint16_t vertexCount;    // 3..kMaxScreenFaceCorners
+  FaceRowSpan rows;        // of its corners, faceRowSpan()
   bool frontFacing;        // counter-clockwise in NDC
 };
 

@@ -117,8 +117,4 @@ class PolygonTables {
   std::vector<uint32_t> newIndex_;
 };
 
-// The sample rows [first, last] of the image that face f of `g` may reach (its corners' rows,
-// clamped); false when it reaches none. For BandLists::build.
-bool faceRows(const FrameGeometry& g, uint32_t f, int height, int& first, int& last);
-
 }  // namespace zrender

@@ -70,7 +70,7 @@ class BandPlacer {
                      const Threads& threads, const RowsOf& rowsOf, const Size& size,
                      const Place& place) {
     constexpr size_t kChunk = 4096;
-    constexpr uint64_t kNone = ~uint64_t(0);
+    constexpr uint32_t kNone = ~uint32_t(0);
     using Chunk = ChunkRange;
     chunks_.clear();
     size_t n = 0;
@@ -82,18 +82,23 @@ class BandPlacer {
     const size_t count = size_t(bands.count()), chunks = chunks_.size();
     cursor_.assign(chunks * count, 0);
     range_.resize(n);  // each item's first and last band, from the counting pass
+    // Each row's band: a look-up, not bandOf()'s division, for every item.
+    bandOfRow_.resize(size_t(bands.rowEnd(bands.count() - 1)));
+    for (int b = 0; b < bands.count(); ++b)
+      std::fill(bandOfRow_.begin() + bands.rowBegin(b), bandOfRow_.begin() + bands.rowEnd(b),
+                uint16_t(b));
     threads.forEach(chunks, [&](size_t c) {
       const Chunk& k = chunks_[c];
       uint32_t* counts = cursor_.data() + c * count;
       for (size_t i = k.begin; i < k.end; ++i) {
-        uint64_t& range = range_[k.first + i - k.begin];
+        uint32_t& range = range_[k.first + i - k.begin];
         int first = 0, last = 0;
         if (!rowsOf(k.segment, i, first, last)) {
           range = kNone;
           continue;
         }
-        const uint32_t b0 = uint32_t(bands.bandOf(first)), b1 = uint32_t(bands.bandOf(last));
-        range = uint64_t(b0) << 32 | b1;
+        const uint32_t b0 = bandOfRow_[size_t(first)], b1 = bandOfRow_[size_t(last)];
+        range = b0 << 16 | b1;
         for (uint32_t b = b0; b <= b1; ++b) ++counts[b];
       }
     });
@@ -114,10 +119,9 @@ class BandPlacer {
       const Chunk& k = chunks_[c];
       uint32_t* at = cursor_.data() + c * count;
       for (size_t i = k.begin; i < k.end; ++i) {
-        const uint64_t range = range_[k.first + i - k.begin];
+        const uint32_t range = range_[k.first + i - k.begin];
         if (range == kNone) continue;
-        for (uint32_t b = uint32_t(range >> 32); b <= uint32_t(range); ++b)
-          place(k.segment, i, at[b]++);
+        for (uint32_t b = range >> 16; b <= (range & 0xFFFF); ++b) place(k.segment, i, at[b]++);
       }
     });
   }
@@ -130,7 +134,9 @@ class BandPlacer {
     size_t segment, begin, end, first;  // items [begin, end) of a segment; first: overall
   };
   std::vector<uint32_t> start_, cursor_;
-  std::vector<uint64_t> range_;
+  // Band numbers fit 16 bits: a band has a row at least, and an image at most 32768 rows.
+  std::vector<uint32_t> range_;  // first band << 16 | last band
+  std::vector<uint16_t> bandOfRow_;
   std::vector<ChunkRange> chunks_;
 };
 

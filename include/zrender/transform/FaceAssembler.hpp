@@ -67,8 +67,9 @@ class FaceAssembler {
       const FixedPoint& b = state[corners[1]].snapped;
       const FixedPoint& c = state[corners[2]].snapped;
       const int64_t area = orient2d(a, b, c);
-      if (!droppedBeforeDepths(a, b, c, area, out))
-        appendTriangleDepths(faceId, corners, area < 0, out);
+      FaceRowSpan rows;
+      if (!droppedBeforeDepths(a, b, c, area, out, rows))
+        appendTriangleDepths(faceId, corners, area < 0, rows, out);
       return;
     }
     appendFace(faceId, corners, count, out);
@@ -77,9 +78,9 @@ class FaceAssembler {
  private:
   // The checks that need only the snapped corners (degenerate, back face: counted; no sample
   // centre covered: not counted, as no set-up ever counted it; hidden tiles: counted); true
-  // when the face goes no further.
+  // when the face goes no further. Otherwise `rows` are the sample rows it spans.
   bool droppedBeforeDepths(const FixedPoint& a, const FixedPoint& b, const FixedPoint& c,
-                           int64_t area, FrameGeometry& out) const {
+                           int64_t area, FrameGeometry& out, FaceRowSpan& rows) const {
     TransformCounters& counters = out.counters;
     if (area == 0) {
       counters.degenerate += 1;
@@ -93,6 +94,7 @@ class FaceAssembler {
     // A face that covers no sample centre would be set up and stored to draw nothing.
     const SampleRect r = sampleBounds(a, b, c, out.width, out.height);
     if (r.empty()) return true;
+    rows = FaceRowSpan{uint16_t(r.minY), uint16_t(r.maxY)};
     // Where the instance's nearest depth is hidden, which needs no depth loaded: enough for a
     // face of an instance wholly behind what is drawn there.
     if (!hiddenTiles_.marked) return false;
@@ -109,7 +111,7 @@ class FaceAssembler {
   void appendFace(uint32_t faceId, FaceCorners corners, uint32_t count, FrameGeometry& out);
   void appendTriangle(uint32_t faceId, FaceCorners corners, FrameGeometry& out);
   void appendTriangleDepths(uint32_t faceId, FaceCorners corners, bool frontFacing,
-                            FrameGeometry& out);
+                            FaceRowSpan rows, FrameGeometry& out);
   void appendClippedFace(uint32_t faceId, FaceCorners corners, uint32_t count, uint64_t pieces,
                          FrameGeometry& out);
   void appendSnappedFace(uint32_t faceId, const DepthPlane& plane, uint64_t pieces,

@@ -30,7 +30,10 @@ class PolygonBands {
     placer_.placeSegments(
         faceCounts, bands, threads,
         [&](size_t part, size_t f, int& first, int& last) {
-          return faceRows(*parts_[part], uint32_t(f), height, first, last);
+          const FaceRowSpan rows = parts_[part]->faces[f].rows;
+          first = rows.first;
+          last = rows.last;
+          return first <= last;
         },
         [&](uint32_t total) { faces_.resize(total); },
         [&](size_t part, size_t f, uint32_t k) {
