@@ -21,6 +21,14 @@ int Threads::slot() const {
   return index == tbb::task_arena::not_initialized ? 0 : index;
 }
 
+ThreadsStart::ThreadsStart(const Threads& threads) {
+  if (threads.parallel()) thread_ = std::thread([&threads] { threads.start(); });
+}
+
+ThreadsStart::~ThreadsStart() {
+  if (thread_.joinable()) thread_.join();
+}
+
 int hardwareThreads() {
   return std::max(tbb::info::default_concurrency(), 1);
 }

@@ -134,7 +134,7 @@ void writeTextAtomically(const fs::path& path, const std::string& text) {
       throw InputError(path.string() + ": cannot write file");
     }
   }
-  fs::rename(tmp, path, ec);
+  replaceFile(tmp, path, ec);
   if (ec) {
     std::error_code ignored;  // not ec: its message is the reason given
     fs::remove(tmp, ignored);

@@ -111,6 +111,11 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     warnings.clear();
   };
 
+  // The loading's threads, then the frames': started at once, to be running when the loading's
+  // first loop comes (the settings are read and the outputs checked meanwhile).
+  const Threads threads(options.threads);
+  const ThreadsStart threadsStart(threads);
+
   makeAlgorithm(options.algorithm);  // an unknown name fails before any loading
   SceneSettings settings =
       resolveScene(options.scene, options.settings, options.overrides, warnings);
@@ -134,7 +139,6 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   if (options.ids) checkOutputExtension(*options.ids, {".png"}, "id image");
 
   const double loadStart = nowMs();
-  const Threads threads(options.threads);  // the loading's, then the frames'
   // A turntable with at least as many frames as threads renders whole frames at once, each on
   // one thread by a renderer of one thread, rather than one frame after another split over the
   // threads: no slower, and up to a fifth faster where a frame splits worst (measured:
@@ -275,7 +279,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   if (video) {
     video->close();
     std::error_code ec;
-    fs::rename(videoTmp, colorPath, ec);
+    replaceFile(videoTmp, colorPath, ec);
     if (ec) throw InputError(colorPath.string() + ": cannot write file: " + ec.message());
     videoTmp.clear();
   }

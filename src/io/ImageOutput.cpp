@@ -1,7 +1,10 @@
 #include "zrender/io/ImageOutput.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cstdio>
 
 #include <algorithm>
 #include <cctype>
@@ -71,6 +74,20 @@ void checkWritable(const std::filesystem::path& path) {
   fs::remove(probe, ec);
 }
 
+void replaceFile(const std::filesystem::path& from, const std::filesystem::path& to,
+                 std::error_code& ec) {
+  struct stat target {};
+  if (::lstat(to.c_str(), &target) == 0 && S_ISREG(target.st_mode) &&
+      ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
+    std::filesystem::remove(from, ec);  // the old file, now under the temporary name
+    ec.clear();                         // the new one is in place whatever became of the old
+    return;
+  }
+  // No file there, or not a regular one (a rename over a folder fails as it should), or a file
+  // system that cannot exchange.
+  std::filesystem::rename(from, to, ec);
+}
+
 void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image,
                           const Threads* threads) {
   namespace fs = std::filesystem;
@@ -82,7 +99,7 @@ void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& imag
     fs::remove(tmp, ec);
     throw InputError(path.string() + ": " + reason);
   }
-  fs::rename(tmp, path, ec);
+  replaceFile(tmp, path, ec);
   if (ec) {
     std::error_code ignored;  // not ec: its message is the reason given
     fs::remove(tmp, ignored);

@@ -1,5 +1,6 @@
 #include "zrender/io/PngWriter.hpp"
 
+#include <isa-l/crc.h>
 #include <isa-l/igzip_lib.h>
 #include <zlib.h>
 
@@ -9,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "zrender/base/InOrderPipeline.hpp"
 #include "zrender/base/Threads.hpp"
 #include "zrender/base/UninitializedAllocator.hpp"
 #include "zrender/io/PngRows.hpp"
@@ -120,30 +122,31 @@ bool writeAll(std::FILE* file, const void* data, size_t n) {
   return std::fwrite(data, 1, n, file) == n;
 }
 
-// A chunk's length and type; `crc` starts its CRC-32, which covers the type and the data.
-bool beginChunk(std::FILE* file, const char* type, size_t length, uLong& crc) {
+// A chunk's length and type; `crc` starts its CRC-32, which covers the type and the data. The
+// CRC is ISA-L's (the same CRC-32 as zlib's crc32, in a tenth of its time with PCLMULQDQ).
+bool beginChunk(std::FILE* file, const char* type, size_t length, uint32_t& crc) {
   unsigned char head[8];
   putBigEndian32(head, uint32_t(length));
   std::memcpy(head + 4, type, 4);
-  crc = crc32(crc32(0, nullptr, 0), head + 4, 4);
+  crc = crc32_gzip_refl(0, head + 4, 4);
   return writeAll(file, head, sizeof head);
 }
 
-bool endChunk(std::FILE* file, uLong crc) {
+bool endChunk(std::FILE* file, uint32_t crc) {
   unsigned char tail[4];
   putBigEndian32(tail, uint32_t(crc));
   return writeAll(file, tail, sizeof tail);
 }
 
 // Data of one chunk, or part of it.
-bool writeChunkData(std::FILE* file, const unsigned char* data, size_t n, uLong& crc) {
-  if (n == 0) return true;  // IEND's: crc32 of a null pointer would be 0, not `crc`
-  crc = crc32_z(crc, data, n);
+bool writeChunkData(std::FILE* file, const unsigned char* data, size_t n, uint32_t& crc) {
+  if (n == 0) return true;  // IEND's
+  crc = crc32_gzip_refl(crc, data, n);
   return writeAll(file, data, n);
 }
 
 bool writeChunk(std::FILE* file, const char* type, const unsigned char* data, size_t n) {
-  uLong crc;
+  uint32_t crc;
   return beginChunk(file, type, n, crc) && writeChunkData(file, data, n, crc) &&
          endChunk(file, crc);
 }
@@ -156,7 +159,7 @@ bool writeIdat(std::FILE* file, const std::vector<Piece>& pieces) {
   size_t piece = 0, offset = 0;  // the next byte to write: pieces[piece].data[offset]
   while (total > 0) {
     const size_t length = std::min(total, kPngChunkBytes);
-    uLong crc;
+    uint32_t crc;
     if (!beginChunk(file, "IDAT", length, crc)) return false;
     for (size_t left = length; left > 0;) {
       if (offset == pieces[piece].size) {
@@ -185,27 +188,6 @@ bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, st
   const size_t rowBytes = 1 + sampleBytes(image);
   const int rowsPerStrip = int(std::clamp<size_t>(stripBytes / rowBytes, 1, size_t(image.rows)));
   const size_t stripCount = (size_t(image.rows) + size_t(rowsPerStrip) - 1) / size_t(rowsPerStrip);
-  std::vector<Strip> strips(stripCount);
-  std::vector<Scratch> scratch(size_t(threads.count()));
-  threads.forEach(stripCount, [&](size_t i) {
-    const int first = int(i) * rowsPerStrip;
-    strips[i] = deflateStrip(image, first, std::min(first + rowsPerStrip, image.rows),
-                             i + 1 == stripCount, scratch[size_t(threads.slot())]);
-  });
-
-  std::vector<Piece> pieces = {{kZlibHeader, sizeof kZlibHeader}};
-  uLong adler = adler32(0, nullptr, 0);
-  for (const Strip& s : strips) {
-    if (!s.ok) {
-      error = "compression failed";  // igzip fails only on arguments it does not take
-      return false;
-    }
-    pieces.push_back({s.deflated.data(), s.deflated.size()});
-    adler = adler32_combine(adler, s.adler, z_off_t(s.filteredBytes));
-  }
-  unsigned char trailer[4];
-  putBigEndian32(trailer, uint32_t(adler));
-  pieces.push_back({trailer, sizeof trailer});
 
   const bool gray = image.channels() == 1;
   unsigned char header[13];
@@ -214,13 +196,58 @@ bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, st
   header[8] = uint8_t(image.elemSize1() * 8);  // bits per sample
   header[9] = uint8_t(gray ? kColorGray : kColorRgb);
   header[10] = header[11] = header[12] = 0;  // deflate, adaptive filtering, no interlace
+  const auto failed = [&] {
+    error = errno ? std::strerror(errno) : "write failed";
+    return false;
+  };
   errno = 0;
-  if (writeAll(file, kSignature, sizeof kSignature) &&
-      writeChunk(file, "IHDR", header, sizeof header) && writeIdat(file, pieces) &&
-      writeChunk(file, "IEND", nullptr, 0) && std::fflush(file) == 0)
-    return true;
-  error = errno ? std::strerror(errno) : "write failed";
-  return false;
+  if (!writeAll(file, kSignature, sizeof kSignature) ||
+      !writeChunk(file, "IHDR", header, sizeof header))
+    return failed();
+
+  // The strips are deflated by the threads and written in order as each is done, so that the
+  // writing overlaps the deflating of the strips after it. Each strip is its own IDAT chunks,
+  // the zlib header in the first strip's, the stream's Adler-32 in the last's.
+  struct Stop {};  // ends the strips early; `error` says why
+  const size_t slots = 2 * size_t(threads.count());
+  std::vector<Strip> strips(slots);
+  std::vector<Scratch> scratch(slots);
+  uLong adler = adler32(0, nullptr, 0);
+  try {
+    pipelineInOrder(
+        threads, stripCount, slots,
+        [&](size_t i, size_t slot) {
+          const int first = int(i) * rowsPerStrip;
+          strips[slot] = deflateStrip(image, first, std::min(first + rowsPerStrip, image.rows),
+                                      i + 1 == stripCount, scratch[slot]);
+        },
+        [&](size_t i, size_t slot) {
+          const Strip& s = strips[slot];
+          if (!s.ok) {
+            error = "compression failed";  // igzip fails only on arguments it does not take
+            throw Stop();
+          }
+          adler = adler32_combine(adler, s.adler, z_off_t(s.filteredBytes));
+          std::vector<Piece> pieces;
+          if (i == 0) pieces.push_back({kZlibHeader, sizeof kZlibHeader});
+          pieces.push_back({s.deflated.data(), s.deflated.size()});
+          unsigned char trailer[4];
+          if (i + 1 == stripCount) {
+            putBigEndian32(trailer, uint32_t(adler));
+            pieces.push_back({trailer, sizeof trailer});
+          }
+          errno = 0;  // this thread's
+          if (!writeIdat(file, pieces)) {
+            failed();
+            throw Stop();
+          }
+        });
+  } catch (const Stop&) {
+    return false;
+  }
+  errno = 0;
+  if (writeChunk(file, "IEND", nullptr, 0) && std::fflush(file) == 0) return true;
+  return failed();
 }
 
 }  // namespace zrender

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <thread>
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/global_control.h>
@@ -64,6 +65,12 @@ class Threads {
   // and always 0 with one thread, even on a thread of another arena: a renderer of one thread
   // drawing a turntable's frame among others), to give each thread its own scratch.
   int slot() const;
+
+  // Starts the arena's threads without waiting for them (an empty task), so that the first
+  // loop finds them running. Nothing with one thread.
+  void start() const {
+    if (arena_) arena_->enqueue([] {});
+  }
 
   // f() on the arena's threads (tbb's loops inside it use them), or with one thread on the
   // calling thread; f's exception is rethrown.
@@ -138,6 +145,21 @@ class Threads {
   std::unique_ptr<tbb::global_control> limit_;
   std::unique_ptr<tbb::task_arena> arena_;
   std::unique_ptr<char[]> slotMarks_;  // one address per slot, for TaskEdges
+};
+
+// Starts the arena of `threads` (Threads::start) from a thread of its own, joined when this
+// goes out of scope: the caller goes on at once while oneTBB sets itself up and creates the
+// arena's threads, which took 0.5 to 2 ms of the first loop of a process on this machine
+// (docs/performance.md, Two threads, 2026-11-27 (second session)). Nothing with one thread.
+class ThreadsStart {
+ public:
+  explicit ThreadsStart(const Threads& threads);
+  ~ThreadsStart();
+  ThreadsStart(const ThreadsStart&) = delete;
+  ThreadsStart& operator=(const ThreadsStart&) = delete;
+
+ private:
+  std::thread thread_;
 };
 
 // The hardware threads of this machine (at least 1): the default of --threads.

@@ -29,9 +29,10 @@ inline constexpr size_t kPngChunkBytes = 1 << 20;
 bool pngCanHold(const cv::Mat& image);
 
 // Writes `image` (pngCanHold) as a PNG file into `file`, its strips of about `stripBytes` (at
-// least one row each) deflated by `threads`. The bytes written do not depend on the number of
-// threads. Returns false and sets `error` ("out of memory", or the system's reason for a failed
-// write) on failure; `file` is left open either way.
+// least one row each) deflated by `threads` and written in order as each is done, each strip
+// its own IDAT chunks. The bytes written do not depend on the number of threads. Returns false and
+// sets `error` ("out of memory", or the system's reason for a failed write) on failure; `file` is
+// left open either way.
 bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, std::string& error,
                size_t stripBytes = kPngStripBytes);
 
