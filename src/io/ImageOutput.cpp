@@ -76,12 +76,19 @@ void checkWritable(const std::filesystem::path& path) {
 
 void replaceFile(const std::filesystem::path& from, const std::filesystem::path& to,
                  std::error_code& ec) {
-  struct stat target {};
-  if (::lstat(to.c_str(), &target) == 0 && S_ISREG(target.st_mode) &&
+  const auto isFile = [](const std::filesystem::path& path) {
+    struct stat status {};
+    return ::lstat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode);
+  };
+  if (isFile(to) &&
       ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
-    std::filesystem::remove(from, ec);  // the old file, now under the temporary name
-    ec.clear();                         // the new one is in place whatever became of the old
-    return;
+    if (isFile(from)) {  // the old file, now under the temporary name
+      std::filesystem::remove(from, ec);
+      ec.clear();  // the new one is in place whatever became of the old
+      return;
+    }
+    // Something else took the target's place since it was looked at: put it back.
+    ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE);
   }
   // No file there, or not a regular one (a rename over a folder fails as it should), or a file
   // system that cannot exchange.
