@@ -5,9 +5,7 @@
 
 #include <cerrno>
 #include <filesystem>
-#include <fstream>
 #include <iterator>
-#include <sstream>
 #include <string>
 #include <system_error>
 
@@ -39,13 +37,6 @@ TEST(ImageOutput, AFailedRenameGivesItsReason) {
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 1);
 }
 
-std::string contents(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 size_t entries(const fs::path& folder) {
   return size_t(std::distance(fs::directory_iterator(folder), fs::directory_iterator()));
 }
@@ -58,13 +49,13 @@ TEST(ImageOutput, AReplacedFileLeavesTheNewOneAloneUnderItsName) {
   std::error_code ec;
   replaceFile(dir.file(".tmp"), dir.file("out.png"), ec);
   EXPECT_FALSE(ec) << ec.message();
-  EXPECT_EQ(contents(dir.file("out.png")), "new");
+  EXPECT_EQ(test::readFile(dir.file("out.png")), "new");
   EXPECT_EQ(entries(dir.path), 1u);
 
   dir.write(".tmp2", "first");
   replaceFile(dir.file(".tmp2"), dir.file("fresh.png"), ec);
   EXPECT_FALSE(ec) << ec.message();
-  EXPECT_EQ(contents(dir.file("fresh.png")), "first");
+  EXPECT_EQ(test::readFile(dir.file("fresh.png")), "first");
   EXPECT_EQ(entries(dir.path), 2u);
 }
 
@@ -79,8 +70,8 @@ TEST(ImageOutput, AReplacedSymbolicLinkIsReplacedNotItsTarget) {
   replaceFile(dir.file(".tmp"), dir.file("link.png"), ec);
   EXPECT_FALSE(ec) << ec.message();
   EXPECT_FALSE(fs::is_symlink(dir.file("link.png")));
-  EXPECT_EQ(contents(dir.file("link.png")), "new");
-  EXPECT_EQ(contents(dir.file("target.png")), "target");
+  EXPECT_EQ(test::readFile(dir.file("link.png")), "new");
+  EXPECT_EQ(test::readFile(dir.file("target.png")), "target");
   EXPECT_EQ(entries(dir.path), 2u);
 }
 
