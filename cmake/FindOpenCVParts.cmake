@@ -11,9 +11,15 @@ foreach(_part IN LISTS _zr_parts)
 endforeach()
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(OpenCVParts REQUIRED_VARS OpenCVParts_INCLUDE_DIR ${_zr_required})
-# OpenCV::Core: core and imgproc, light to load. OpenCV::Codecs: imgcodecs and videoio, whose
-# Debian builds pull in some 200 shared libraries; only the codec plugin and the tests link them.
+# OpenCV::Headers: the headers alone, for the program's own code, which uses OpenCV's small
+# vector and matrix types (cv::Vec, cv::Matx: templates, all in the headers) and links none of
+# its libraries. OpenCV::Core: core and imgproc, for the drawing plugin. OpenCV::Codecs:
+# imgcodecs and videoio, whose Debian builds pull in some 200 shared libraries; only the codec
+# plugin and the tests link them.
 if(OpenCVParts_FOUND AND NOT TARGET OpenCV::Core)
+  add_library(OpenCV::Headers INTERFACE IMPORTED)
+  set_target_properties(OpenCV::Headers PROPERTIES
+    INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}")
   add_library(OpenCV::Core INTERFACE IMPORTED)
   set_target_properties(OpenCV::Core PROPERTIES
     INTERFACE_INCLUDE_DIRECTORIES "${OpenCVParts_INCLUDE_DIR}"

@@ -105,13 +105,8 @@ inline std::string describeDifference(const FrameBuffer& a, const FrameBuffer& b
   return "color only";
 }
 
-inline bool sameImage(const cv::Mat& a, const cv::Mat& b) {
-  if (a.size() != b.size() || a.type() != b.type()) return false;
-  const size_t rowBytes = size_t(a.cols) * a.elemSize();
-  for (int y = 0; y < a.rows; ++y) {
-    if (std::memcmp(a.ptr(y), b.ptr(y), rowBytes) != 0) return false;
-  }
-  return true;
+inline bool sameImage(const Image& a, const Image& b) {
+  return a.samePixels(b);
 }
 
 // Renders the scene with every algorithm of algorithmNames() and compares each one's buffer
@@ -124,7 +119,7 @@ inline std::string checkAlgorithmsAgree(const Scene& scene, bool twice) {
     renderer->renderFrame(camera);
     if (twice) {
       const FrameBuffer first = renderer->buffer();
-      const cv::Mat firstColor = renderer->color().clone();
+      const Image firstColor = renderer->color().clone();
       renderer->renderFrame(camera);
       if (!(renderer->buffer() == first) || !sameImage(renderer->color(), firstColor)) {
         return name + ": the second frame differs from the first (" +

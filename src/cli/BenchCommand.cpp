@@ -9,12 +9,10 @@
 #include <memory>
 #include <sstream>
 
-#include <opencv2/core.hpp>
-
 #include "zrender/base/Error.hpp"
 #include "zrender/cli/BenchCommand.hpp"
-#include "zrender/cli/Chart.hpp"
 #include "zrender/cli/Report.hpp"
+#include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/io/SettingsFile.hpp"

@@ -12,7 +12,7 @@
 #include "zrender/base/SideBySide.hpp"
 #include "zrender/base/Threads.hpp"
 #include "zrender/cli/Report.hpp"
-#include "zrender/io/ContactSheet.hpp"
+#include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageCodecs.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/io/SceneFiles.hpp"
@@ -189,7 +189,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     if (!video->isOpen())
       throw InputError(colorPath.string() + ": cannot open a video writer for this format");
   }
-  std::vector<cv::Mat> sheetFrames(options.contactSheet ? size_t(frames) : 0);
+  std::vector<Image> sheetFrames(options.contactSheet ? size_t(frames) : 0);
 
   // Renders a frame and writes its own files: on any thread, several frames at once.
   const auto render = [&](size_t frame, size_t slot) {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/io/ContactSheet.hpp"
+#include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/view/ViewWindow.hpp"

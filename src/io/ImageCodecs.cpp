@@ -7,8 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
-
-#include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "zrender/base/Plugin.hpp"
 #include "zrender/base/Threads.hpp"
@@ -63,7 +62,7 @@ const CodecPlugin& codecPlugin() {
   return plugin;
 }
 
-bool writePng(const fs::path& path, const cv::Mat& image, const Threads& threads,
+bool writePng(const fs::path& path, const Image& image, const Threads& threads,
               std::string& error) {
   if (!pngCanHold(image)) {
     error = image.empty() ? "PNG cannot hold an empty image" : "PNG cannot hold this image type";
@@ -84,7 +83,7 @@ bool writePng(const fs::path& path, const cv::Mat& image, const Threads& threads
   return true;
 }
 
-cv::Mat readPng(const fs::path& path, std::string& error) {
+Image readPng(const fs::path& path, std::string& error) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str())) {
@@ -92,15 +91,21 @@ cv::Mat readPng(const fs::path& path, std::string& error) {
     png_image_free(&png);
     return {};
   }
+  // Read with its alpha, then the alpha dropped (not blended: what cv::imread gives).
   png.format = PNG_FORMAT_BGRA;
-  cv::Mat bgra(int(png.height), int(png.width), CV_8UC4);
-  if (!png_image_finish_read(&png, nullptr, bgra.data, png_int_32(bgra.step), nullptr)) {
+  const size_t width = png.width, height = png.height;
+  std::vector<uint8_t> bgra(width * height * 4);
+  if (!png_image_finish_read(&png, nullptr, bgra.data(), png_int_32(width * 4), nullptr)) {
     error = std::string("cannot be read as an image: ") + png.message;
     png_image_free(&png);
     return {};
   }
-  cv::Mat bgr;
-  cv::cvtColor(bgra, bgr, cv::COLOR_BGRA2BGR);
+  Image bgr(int(height), int(width), PixelFormat::kBgr8);
+  for (size_t y = 0; y < height; ++y) {
+    const uint8_t* in = bgra.data() + y * width * 4;
+    uint8_t* out = bgr.row(int(y));
+    for (size_t x = 0; x < width; ++x) std::memcpy(out + 3 * x, in + 4 * x, 3);
+  }
   return bgr;
 }
 
@@ -110,7 +115,7 @@ bool isPng(const fs::path& path) {
 
 }  // namespace
 
-bool encodeImageFile(const fs::path& path, const cv::Mat& image, std::string& error,
+bool encodeImageFile(const fs::path& path, const Image& image, std::string& error,
                      const Threads* threads) {
   if (isPng(path)) {
     const Threads one;
@@ -122,7 +127,7 @@ bool encodeImageFile(const fs::path& path, const cv::Mat& image, std::string& er
   return false;
 }
 
-cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
+Image decodeColorImage(const fs::path& path, std::string& error) {
   // PNG files are recognised by their signature, whatever their name.
   unsigned char signature[8] = {};
   std::error_code ec;
@@ -139,10 +144,12 @@ cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
   std::fclose(f);
   if (n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0)
     return readPng(path, error);
-  cv::Mat out;
+  Image out;
   char message[512] = "";
-  if (codecPlugin().imread(path.c_str(), 1 /* IMREAD_COLOR */, &out, message, sizeof message))
+  if (codecPlugin().imread(path.c_str(), &out, message, sizeof message)) {
     error = message;
+    return {};
+  }
   return out;
 }
 
@@ -160,7 +167,7 @@ VideoFile::~VideoFile() {
   close();
 }
 
-void VideoFile::write(const cv::Mat& frame) {
+void VideoFile::write(const Image& frame) {
   if (handle_) codecPlugin().videoWrite(handle_, &frame);
 }
 

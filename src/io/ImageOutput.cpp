@@ -95,7 +95,7 @@ void replaceFile(const std::filesystem::path& from, const std::filesystem::path&
   std::filesystem::rename(from, to, ec);
 }
 
-void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image,
+void writeImageAtomically(const std::filesystem::path& path, const Image& image,
                           const Threads* threads) {
   namespace fs = std::filesystem;
   std::error_code ec;
@@ -114,31 +114,31 @@ void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& imag
   }
 }
 
-cv::Mat depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
+Image depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
   const int width = fb.width() / scale, height = fb.height() / scale;
-  cv::Mat out(height, width, sixteenBit ? CV_16UC1 : CV_32FC1);
+  Image out(height, width, sixteenBit ? PixelFormat::kGray16 : PixelFormat::kFloat32);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const float d = keyDepth(pixelKey(fb, scale, x, y));
       if (sixteenBit)
-        out.at<uint16_t>(y, x) = uint16_t(std::lround(double(d) * 65535.0));
+        out.row<uint16_t>(y)[x] = uint16_t(std::lround(double(d) * 65535.0));
       else
-        out.at<float>(y, x) = d;
+        out.row<float>(y)[x] = d;
     }
   }
   return out;
 }
 
-cv::Mat idImage(const FrameBuffer& fb, int scale) {
+Image idImage(const FrameBuffer& fb, int scale) {
   const int width = fb.width() / scale, height = fb.height() / scale;
-  cv::Mat out(height, width, CV_8UC3);
+  Image out(height, width, PixelFormat::kBgr8);
   for (int y = 0; y < height; ++y) {
-    uchar* p = out.ptr<uchar>(y);
+    uint8_t* p = out.row(y);
     for (int x = 0; x < width; ++x) {
       const uint32_t v = keyFaceId(pixelKey(fb, scale, x, y)) + 1;  // background wraps to 0
-      p[3 * x + 2] = uchar(v);                                      // R: low byte
-      p[3 * x + 1] = uchar(v >> 8);                                 // G: middle byte
-      p[3 * x + 0] = uchar(v >> 16);                                // B: high byte
+      p[3 * x + 2] = uint8_t(v);                                    // R: low byte
+      p[3 * x + 1] = uint8_t(v >> 8);                               // G: middle byte
+      p[3 * x + 0] = uint8_t(v >> 16);                              // B: high byte
     }
   }
   return out;

@@ -9,7 +9,7 @@
 
 namespace zrender {
 
-cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings) {
+Image loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings) {
   std::string texturePath;
   if (settings.texture) {
     texturePath = settings.texture->string();
@@ -21,9 +21,9 @@ cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& w
       }
     }
   }
-  if (texturePath.empty()) return cv::Mat();
+  if (texturePath.empty()) return Image();
   std::string error;
-  cv::Mat texture = decodeColorImage(texturePath, error);
+  Image texture = decodeColorImage(texturePath, error);
   // The scene's own `texture` key is a value the user chose: bad input. A material's map_Kd
   // comes with a model from elsewhere, whose textures often go missing: drawn without.
   if (texture.empty() && settings.texture)
@@ -35,7 +35,7 @@ cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& w
 
 Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads* threads) {
   std::shared_ptr<const Mesh> mesh;
-  cv::Mat texture;
+  Image texture;
   if (settings.texture) {
     // Warnings in the order of loading one after the other: the model's, then the texture's.
     Warnings textureWarnings;

@@ -4,10 +4,9 @@
 
 namespace zrender {
 
-bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuffer& b,
-                     const cv::Mat& colorB) {
-  if (!(a == b) || colorA.size() != colorB.size() || colorA.type() != colorB.type()) return false;
-  return cv::countNonZero(cv::Mat(colorA != colorB).reshape(1)) == 0;
+bool identicalFrames(const FrameBuffer& a, const Image& colorA, const FrameBuffer& b,
+                     const Image& colorB) {
+  return a == b && colorA.samePixels(colorB);
 }
 
 Renderer::Renderer(const Scene& scene, const std::string& algorithm, int threads)
@@ -53,7 +52,7 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
     memory_.color.resize(camera.width, camera.height);  // the shader writes every pixel
     {
       ScopedTimer shading(shadeMs);
-      shader_.begin(buffer, camera, sampleScale_, memory_.color.mat(),
+      shader_.begin(buffer, camera, sampleScale_, memory_.color.image(),
                     algorithm_->gathersFaces(threads_.parallel()) ? &geometry_ : nullptr);
     }
     // Rows finished by the algorithm are shaded while their keys are still in cache; that time

@@ -28,7 +28,7 @@ std::vector<Vec3> gridOffsets(const SceneSettings& s) {
 
 }  // namespace
 
-Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, cv::Mat texture) {
+Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, Image texture) {
   Scene scene;
   scene.settings = settings;
   scene.mesh = std::move(mesh);

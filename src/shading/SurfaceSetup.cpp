@@ -52,22 +52,24 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
         material >= 0 ? mesh.materials[size_t(material)].diffuse : cv::Vec3f(0.8f, 0.8f, 0.8f);
     face.textured = texture && allUvs;
   }
-  const cv::Mat& t = scene.texture;
+  const Image& t = scene.texture;
   if (mode == ShadingMode::Texture && !t.empty()) {
     // Framed by a copy of the last column and row before the first and of the first after the
     // last (SurfaceFrame), so that bilinear filtering reads texel pairs without wrapping.
-    const int stride = t.cols + 2;
-    texels_.resize(size_t(stride) * size_t(t.rows + 2));
-    for (int y = 0; y < t.rows + 2; ++y)
+    const int rows = t.rows(), cols = t.cols();
+    const int stride = cols + 2;
+    texels_.resize(size_t(stride) * size_t(rows + 2));
+    for (int y = 0; y < rows + 2; ++y) {
+      const uint8_t* row = t.row((y + rows - 1) % rows);
       for (int x = 0; x < stride; ++x) {
-        const cv::Vec3b& bgr =
-            t.at<cv::Vec3b>((y + t.rows - 1) % t.rows, (x + t.cols - 1) % t.cols);
+        const uint8_t* bgr = row + 3 * ((x + cols - 1) % cols);
         texels_[size_t(y) * size_t(stride) + size_t(x)] =
             uint32_t(bgr[2]) << 16 | uint32_t(bgr[1]) << 8 | bgr[0];
       }
+    }
     frame_.texels = texels_.data();
-    frame_.textureWidth = t.cols;
-    frame_.textureHeight = t.rows;
+    frame_.textureWidth = cols;
+    frame_.textureHeight = rows;
   }
   frame_.mode = mode;
 }

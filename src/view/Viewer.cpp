@@ -5,9 +5,9 @@
 
 #include "zrender/base/Clock.hpp"
 #include "zrender/base/Error.hpp"
+#include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/view/FrameCommand.hpp"
-#include "zrender/view/Overlay.hpp"
 #include "zrender/view/ViewFigures.hpp"
 
 namespace zrender {
@@ -86,7 +86,7 @@ void Viewer::printFigures() {
 void Viewer::run(ViewWindow& window) {
   size_t nextKey = 0;
   double lastFrameStart = nowMs(), lastPrint = lastFrameStart;
-  cv::Mat shown;
+  Image shown;
   for (;;) {
     const double frameStart = nowMs();
     if (framesShown_ > 0) controls_.advance((frameStart - lastFrameStart) / 1000.0);

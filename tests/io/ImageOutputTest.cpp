@@ -27,7 +27,7 @@ TEST(ImageOutput, AFailedRenameGivesItsReason) {
   TempDir dir;
   fs::create_directories(dir.file("c.png"));
   try {
-    writeImageAtomically(dir.file("c.png"), cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)));
+    writeImageAtomically(dir.file("c.png"), Image(2, 2, PixelFormat::kBgr8));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),

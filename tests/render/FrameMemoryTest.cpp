@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "support/TestSupport.hpp"
+#include "zrender/io/ImageMat.hpp"
 #include "zrender/render/FrameMemory.hpp"
 #include "zrender/render/Renderer.hpp"
 
@@ -25,7 +26,7 @@ FrameMemory touched(int width, int height, int msaa) {
   FrameMemory m(width, height, msaa);
   for (size_t part = 0; part < m.parts(); ++part) m.touchPart(part);
   std::fill(m.buffer.data(), m.buffer.data() + m.buffer.size(), DepthKey(0));
-  m.color.mat().setTo(cv::Scalar::all(7));
+  asMat(m.color.image()).setTo(cv::Scalar::all(7));
   return m;
 }
 
@@ -46,9 +47,9 @@ TEST(FrameMemory, BuffersHaveTheFramesSize) {
     const int scale = msaa == 4 ? 2 : 1;
     EXPECT_EQ(m.buffer.width(), 7 * scale);
     EXPECT_EQ(m.buffer.height(), 5 * scale);
-    EXPECT_EQ(m.color.mat().cols, 7);
-    EXPECT_EQ(m.color.mat().rows, 5);
-    EXPECT_EQ(m.color.mat().type(), CV_8UC3);
+    EXPECT_EQ(asMat(m.color.image()).cols, 7);
+    EXPECT_EQ(asMat(m.color.image()).rows, 5);
+    EXPECT_EQ(asMat(m.color.image()).type(), CV_8UC3);
   }
 }
 
@@ -58,27 +59,27 @@ TEST(FrameMemory, PartsFaultInEveryPage) {
   FrameMemory m(1000, 900, 4);  // 28.8 MB of keys, 2.7 MB of color
   ASSERT_EQ(m.parts(), 14u + 2u);
   const size_t keyBytes = m.buffer.size() * sizeof(DepthKey);
-  const size_t colorBytes = m.color.mat().total() * m.color.mat().elemSize();
+  const size_t colorBytes = asMat(m.color.image()).total() * asMat(m.color.image()).elemSize();
   const size_t page = size_t(sysconf(_SC_PAGESIZE));
   EXPECT_LT(residentPages(m.buffer.data(), keyBytes), keyBytes / page / 2);
-  EXPECT_LT(residentPages(m.color.mat().data, colorBytes), colorBytes / page / 2);
+  EXPECT_LT(residentPages(asMat(m.color.image()).data, colorBytes), colorBytes / page / 2);
   for (size_t part = 0; part < m.parts(); ++part) m.touchPart(part);
   EXPECT_EQ(residentPages(m.buffer.data(), keyBytes), (keyBytes + page - 1) / page);
-  EXPECT_EQ(residentPages(m.color.mat().data, colorBytes), (colorBytes + page - 1) / page);
+  EXPECT_EQ(residentPages(asMat(m.color.image()).data, colorBytes), (colorBytes + page - 1) / page);
 }
 
 TEST(FrameMemory, AColorImageKeepsItsPixelsWhereTheyAreWhenMoved) {
   ColorImage a;
   EXPECT_TRUE(a.resize(4, 3));
   EXPECT_FALSE(a.resize(4, 3));  // the same size: the same memory
-  a.mat().setTo(cv::Scalar(1, 2, 3));
-  const unsigned char* pixels = a.mat().data;
+  asMat(a.image()).setTo(cv::Scalar(1, 2, 3));
+  const unsigned char* pixels = asMat(a.image()).data;
   ColorImage b(std::move(a));
-  EXPECT_EQ(b.mat().data, pixels);
-  EXPECT_EQ(b.mat().at<cv::Vec3b>(2, 3), cv::Vec3b(1, 2, 3));
+  EXPECT_EQ(asMat(b.image()).data, pixels);
+  EXPECT_EQ(asMat(b.image()).at<cv::Vec3b>(2, 3), cv::Vec3b(1, 2, 3));
   EXPECT_TRUE(b.resize(3, 4));  // another size: new memory
-  EXPECT_EQ(b.mat().cols, 3);
-  EXPECT_EQ(b.mat().rows, 4);
+  EXPECT_EQ(asMat(b.image()).cols, 3);
+  EXPECT_EQ(asMat(b.image()).rows, 4);
 }
 
 // A frame drawn into adopted buffers, of the frame's size or another, against one drawn into

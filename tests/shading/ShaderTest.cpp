@@ -38,10 +38,9 @@ TEST(Shader, RowsShadedAsTheyBecomeFinalEqualOneShadingAfterTheFrame) {
         const Camera camera = makeCamera(scene);
         Renderer renderer(scene, algorithm);
         renderer.renderFrame(camera);
-        cv::Mat whole;
+        Image whole;
         Shader(scene, mode).shade(renderer.buffer(), camera, renderer.sampleScale(), whole);
-        ASSERT_EQ(whole.size(), renderer.color().size());
-        EXPECT_EQ(cv::countNonZero(cv::Mat(whole != renderer.color()).reshape(1)), 0)
+        EXPECT_TRUE(whole.samePixels(renderer.color()))
             << algorithm << " msaa " << msaa << " mode " << int(mode);
         EXPECT_GT(test::coveredSamples(renderer.buffer()), 2000u);
       }
@@ -115,8 +114,8 @@ TEST(Shader, MsaaIdShadingHoldsTheNearestSampleLikeTheIdImage) {
   for (const std::string algorithm :
        {"zbuffer", "scanline", "interval", "hierarchical", "octree"}) {
     const test::Rendered t = test::render(soup, s, algorithm);
-    const cv::Mat ids = idImage(t.buffer, 2);
-    EXPECT_EQ(cv::countNonZero(cv::Mat(ids != t.color).reshape(1)), 0) << algorithm;
+    const Image ids = idImage(t.buffer, 2);
+    EXPECT_TRUE(ids.samePixels(viewOf(t.color))) << algorithm;
   }
 }
 

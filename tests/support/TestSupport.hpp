@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "zrender/io/ImageMat.hpp"
 #include "zrender/io/SceneValidation.hpp"
 #include "zrender/io/SettingsFile.hpp"
 #include "zrender/raster/FrameBuffer.hpp"

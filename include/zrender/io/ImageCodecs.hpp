@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-#include <opencv2/core.hpp>
+#include "zrender/base/Image.hpp"
 
 namespace zrender {
 
@@ -20,14 +20,14 @@ class Threads;
 // The extension of `path` in lower case (".png" for "X.PNG"); formats are chosen by it.
 std::string lowerExtension(const std::filesystem::path& path);
 
-// Encodes `image` (CV_8UC1, CV_8UC3 BGR, CV_16UC1, or CV_32FC1 for .tif/.exr) into `path`, the
+// Encodes `image` (8-bit gray or BGR, 16-bit gray, or float for .tif/.exr) into `path`, the
 // format chosen by the extension; a PNG is deflated by `threads` when there are several (null:
 // one). Returns false and sets `error` on failure.
-bool encodeImageFile(const std::filesystem::path& path, const cv::Mat& image, std::string& error,
+bool encodeImageFile(const std::filesystem::path& path, const Image& image, std::string& error,
                      const Threads* threads = nullptr);
 
-// Decodes an image file into CV_8UC3 (BGR). Returns an empty Mat and sets `error` on failure.
-cv::Mat decodeColorImage(const std::filesystem::path& path, std::string& error);
+// Decodes an image file into 8-bit BGR. Returns an empty image and sets `error` on failure.
+Image decodeColorImage(const std::filesystem::path& path, std::string& error);
 
 // A video file being written (.mp4: MPEG-4 part 2, .avi: Motion JPEG), 8-bit BGR frames.
 class VideoFile {
@@ -38,8 +38,8 @@ class VideoFile {
   VideoFile(const VideoFile&) = delete;
   VideoFile& operator=(const VideoFile&) = delete;
   bool isOpen() const { return handle_ != nullptr; }
-  void write(const cv::Mat& frame);
-  void close();  // flushes and closes; the destructor does it too
+  void write(const Image& frame);  // 8-bit BGR
+  void close();                    // flushes and closes; the destructor does it too
 
  private:
   void* handle_ = nullptr;

@@ -2,8 +2,7 @@
 
 #include <filesystem>
 
-#include <opencv2/core.hpp>
-
+#include "zrender/base/Image.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 
 namespace zrender {
@@ -39,15 +38,15 @@ void checkWritable(const std::filesystem::path& path);
 // Writes an image completely or not at all: encodes to a temporary file beside the target,
 // then renames it over the target; missing parent folders are created. InputError on failure.
 // A PNG is encoded by `threads` when there are several (null: one thread).
-void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image,
+void writeImageAtomically(const std::filesystem::path& path, const Image& image,
                           const Threads* threads = nullptr);
 
-// The depth buffer at pixel resolution (with MSAA, each pixel's nearest sample): CV_32FC1 in
-// 0..1 for .tif/.exr, CV_16UC1 round(depth * 65535) for .png (near = dark); background is 1.
-cv::Mat depthImage(const FrameBuffer& fb, int sampleScale, bool sixteenBit);
+// The depth buffer at pixel resolution (with MSAA, each pixel's nearest sample): float in 0..1
+// for .tif/.exr, 16-bit round(depth * 65535) for .png (near = dark); background is 1.
+Image depthImage(const FrameBuffer& fb, int sampleScale, bool sixteenBit);
 
 // Face id + 1 in 24 bits per pixel, R = low byte, G = middle, B = high (docs/design.md, Faces, ids
-// and shading), as CV_8UC3 BGR; 0 is background. With MSAA, each pixel's nearest sample.
-cv::Mat idImage(const FrameBuffer& fb, int sampleScale);
+// and shading), as 8-bit BGR; 0 is background. With MSAA, each pixel's nearest sample.
+Image idImage(const FrameBuffer& fb, int sampleScale);
 
 }  // namespace zrender

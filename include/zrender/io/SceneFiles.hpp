@@ -1,7 +1,5 @@
 #pragma once
 
-#include <opencv2/core.hpp>
-
 #include "zrender/base/Error.hpp"
 #include "zrender/scene/Mesh.hpp"
 #include "zrender/scene/Scene.hpp"
@@ -11,11 +9,11 @@ namespace zrender {
 
 class Threads;
 
-// The scene's diffuse texture (CV_8UC3 BGR): its `texture` key, else the first material's
+// The scene's diffuse texture (8-bit BGR): its `texture` key, else the first material's
 // map_Kd; empty when there is none. A `texture` key naming a file that cannot be read is bad
 // input (InputError); a material's map_Kd that cannot be read is a warning, and the model is
 // drawn without it.
-cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings);
+Image loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings);
 
 // The scene of `settings`: its model file, its texture, its instances. Throws InputError. With
 // `threads` (more than one), a `texture` key's image is read while the model loads.

@@ -3,9 +3,8 @@
 #include <cstddef>
 #include <vector>
 
-#include <opencv2/core.hpp>
-
 #include "zrender/base/HugePageAllocator.hpp"
+#include "zrender/base/Image.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 
 namespace zrender {
@@ -15,8 +14,8 @@ namespace zrender {
 class ColorImage {
  public:
   ColorImage() = default;
-  // Moved, the pixels stay where they are, and so does the header over them; a copy would
-  // point at the original's.
+  // Moved, the pixels stay where they are, and so does the view of them; a copy would point
+  // at the original's.
   ColorImage(ColorImage&&) = default;
   ColorImage& operator=(ColorImage&&) = default;
   ColorImage(const ColorImage&) = delete;
@@ -25,12 +24,12 @@ class ColorImage {
   // Sizes it to `width` x `height` pixels: new memory, its pixels indeterminate, when the
   // size changes; true then.
   bool resize(int width, int height);
-  cv::Mat& mat() { return mat_; }
-  const cv::Mat& mat() const { return mat_; }
+  Image& image() { return image_; }
+  const Image& image() const { return image_; }
 
  private:
   std::vector<unsigned char, HugePageAllocator<unsigned char>> bytes_;
-  cv::Mat mat_;  // CV_8UC3, a header over bytes_
+  Image image_;  // 8-bit BGR, a view of bytes_
 };
 
 // The buffers a Renderer draws frames into: the key buffer and the color image.

@@ -3,8 +3,7 @@
 #include <memory>
 #include <vector>
 
-#include <opencv2/core.hpp>
-
+#include "zrender/base/Image.hpp"
 #include "zrender/scene/Mesh.hpp"
 #include "zrender/scene/SceneSettings.hpp"
 #include "zrender/scene/Transforms.hpp"
@@ -18,7 +17,7 @@ struct Scene {
   std::shared_ptr<const Mesh> mesh;
   std::vector<Vec3>
       instanceOffsets;         // grid offset of instance k, model units (docs/design.md, Settings)
-  cv::Mat texture;             // CV_8UC3 (BGR) or empty
+  Image texture;               // 8-bit BGR, or empty
   Vec3 boundsCentre{0, 0, 0};  // bounding sphere of all instances after rotation
   double boundsRadius = 0.0;
   Box3 meshBox;  // the mesh's box, model space (before the rotation)
@@ -29,10 +28,10 @@ struct Scene {
   Mat4 modelMatrix(uint32_t instance) const;
 };
 
-// Builds the instances and bounds; `texture` (CV_8UC3 BGR, or empty) is the scene's diffuse
+// Builds the instances and bounds; `texture` (8-bit BGR, or empty) is the scene's diffuse
 // texture, as io's loadTexture() reads it.
 Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
-                cv::Mat texture = cv::Mat());
+                Image texture = Image());
 
 // Number of triangles the faces make once triangulated (n - 2 per face of n >= 3 corners),
 // all instances included.

@@ -8,15 +8,17 @@
 
 #include "zrender/base/Plugin.hpp"
 #include "zrender/io/CodecPlugin.h"
+#include "zrender/io/ImageMat.hpp"
 
 using zrender::setPluginError;
 
 extern "C" {
 
-__attribute__((visibility("default"))) int zrenderImwrite(const char* path, const cv::Mat* image,
-                                                          char* error, size_t size) {
+__attribute__((visibility("default"))) int zrenderImwrite(const char* path,
+                                                          const zrender::Image* image, char* error,
+                                                          size_t size) {
   try {
-    if (cv::imwrite(path, *image)) return 0;
+    if (cv::imwrite(path, zrender::asMat(*image))) return 0;
     setPluginError(error, size, "cannot write file");
   } catch (const cv::Exception& e) {
     setPluginError(error, size, "cannot encode image: " + e.msg);
@@ -24,11 +26,11 @@ __attribute__((visibility("default"))) int zrenderImwrite(const char* path, cons
   return 1;
 }
 
-__attribute__((visibility("default"))) int zrenderImread(const char* path, int flags, cv::Mat* out,
+__attribute__((visibility("default"))) int zrenderImread(const char* path, zrender::Image* out,
                                                          char* error, size_t size) {
   try {
-    *out = cv::imread(path, flags);
-    if (!out->empty()) return 0;
+    const cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+    if (!image.empty() && zrender::copyToImage(image, *out)) return 0;
     setPluginError(error, size, "cannot be read as an image");
   } catch (const cv::Exception& e) {
     setPluginError(error, size, "cannot decode image: " + e.msg);
@@ -44,8 +46,9 @@ __attribute__((visibility("default"))) void* zrenderVideoOpen(const char* path, 
   return nullptr;
 }
 
-__attribute__((visibility("default"))) int zrenderVideoWrite(void* writer, const cv::Mat* frame) {
-  static_cast<cv::VideoWriter*>(writer)->write(*frame);
+__attribute__((visibility("default"))) int zrenderVideoWrite(void* writer,
+                                                             const zrender::Image* frame) {
+  static_cast<cv::VideoWriter*>(writer)->write(zrender::asMat(*frame));
   return 0;
 }
 

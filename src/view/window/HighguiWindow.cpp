@@ -9,6 +9,7 @@
 #include <opencv2/highgui.hpp>
 
 #include "zrender/base/Plugin.hpp"
+#include "zrender/io/ImageMat.hpp"
 #include "zrender/view/WindowPlugin.h"
 
 using zrender::setPluginError;
@@ -37,9 +38,10 @@ __attribute__((visibility("default"))) void* zrenderWindowOpen(const char* title
 
 // No exception crosses the C interface: a window highgui cannot draw in any more is a closed
 // one, which the next waitKey reports.
-__attribute__((visibility("default"))) void zrenderWindowShow(void* window, const cv::Mat* image) {
+__attribute__((visibility("default"))) void zrenderWindowShow(void* window,
+                                                              const zrender::Image* image) {
   try {
-    cv::imshow(*static_cast<std::string*>(window), *image);
+    cv::imshow(*static_cast<std::string*>(window), zrender::asMat(*image));
   } catch (const cv::Exception&) {
   }
 }

@@ -1,0 +1,53 @@
+#pragma once
+
+// Images drawn with OpenCV's imgproc: the bench's chart, the viewer's overlay and contact
+// sheets. imgproc and OpenCV's core live in a plugin (libzrender_drawing.so, loaded on first
+// use, src/io/drawing/OpenCvDrawing.cpp), so that the runs that draw none of these do not load
+// them at their start: 1.85 ms of every process on this machine (docs/design.md, Plugins).
+// Each function throws std::runtime_error when the plugin cannot be loaded.
+
+#include <string>
+#include <vector>
+
+#include "zrender/base/Image.hpp"
+
+namespace zrender {
+
+// One bar of a chart: a label under it and a value (milliseconds) written above it; `part` (a
+// share of the value: the algorithm's own work in a frame) is drawn darker from the baseline,
+// its value written inside.
+struct ChartBar {
+  std::string label;
+  double value = 0.0;
+  double part = 0.0;
+};
+
+// A group of bars sharing a caption (one scene of the bench table).
+struct ChartGroup {
+  std::string caption;
+  std::vector<ChartBar> bars;
+};
+
+// A grouped bar chart (8-bit BGR, white background). Each group is scaled to its own largest
+// value, since scenes differ by orders of magnitude.
+Image drawBarChart(const std::string& title, const std::vector<ChartGroup>& groups);
+
+// A rectangle of pixels: its top-left corner and its size.
+struct PixelBox {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
+// Where withOverlay draws `lines` on a frame of `width` x `height` pixels: a box in the top-left
+// corner, its text scaled down until the longest line fits the frame's width.
+PixelBox overlayBox(int width, int height, const std::vector<std::string>& lines);
+
+// A copy of `frame` (8-bit BGR) with `lines` written in white on a darkened box (overlayBox);
+// the frame itself is left as the renderer made it.
+Image withOverlay(const Image& frame, const std::vector<std::string>& lines);
+
+// Frames (8-bit BGR, all of the first one's size) tiled left to right, top to bottom in a
+// square grid, each scaled to fit a sheet about 1800 pixels wide and never enlarged: a
+// turntable's frames (--contact-sheet) or the frames a viewer showed.
+Image contactSheet(const std::vector<Image>& frames);
+
+}  // namespace zrender
