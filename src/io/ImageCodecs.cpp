@@ -91,9 +91,19 @@ Image readPng(const fs::path& path, std::string& error) {
     png_image_free(&png);
     return {};
   }
+  const size_t width = png.width, height = png.height;
+  if (!(png.format & PNG_FORMAT_FLAG_ALPHA)) {  // no alpha (nor tRNS): read as it is kept
+    png.format = PNG_FORMAT_BGR;
+    Image bgr(int(height), int(width), PixelFormat::kBgr8);
+    if (!png_image_finish_read(&png, nullptr, bgr.data(), png_int_32(bgr.step()), nullptr)) {
+      error = std::string("cannot be read as an image: ") + png.message;
+      png_image_free(&png);
+      return {};
+    }
+    return bgr;
+  }
   // Read with its alpha, then the alpha dropped (not blended: what cv::imread gives).
   png.format = PNG_FORMAT_BGRA;
-  const size_t width = png.width, height = png.height;
   std::vector<uint8_t> bgra(width * height * 4);
   if (!png_image_finish_read(&png, nullptr, bgra.data(), png_int_32(width * 4), nullptr)) {
     error = std::string("cannot be read as an image: ") + png.message;

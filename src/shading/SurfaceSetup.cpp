@@ -58,14 +58,16 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
     // last (SurfaceFrame), so that bilinear filtering reads texel pairs without wrapping.
     const int rows = t.rows(), cols = t.cols();
     const int stride = cols + 2;
-    texels_.resize(size_t(stride) * size_t(rows + 2));
+    texels_.resize(size_t(stride) * size_t(rows + 2));  // every texel written below
+    const auto texel = [](const uint8_t* bgr) {
+      return uint32_t(bgr[2]) << 16 | uint32_t(bgr[1]) << 8 | bgr[0];
+    };
     for (int y = 0; y < rows + 2; ++y) {
       const uint8_t* row = t.row((y + rows - 1) % rows);
-      for (int x = 0; x < stride; ++x) {
-        const uint8_t* bgr = row + 3 * ((x + cols - 1) % cols);
-        texels_[size_t(y) * size_t(stride) + size_t(x)] =
-            uint32_t(bgr[2]) << 16 | uint32_t(bgr[1]) << 8 | bgr[0];
-      }
+      uint32_t* out = texels_.data() + size_t(y) * size_t(stride);
+      out[0] = texel(row + 3 * (cols - 1));
+      for (int x = 0; x < cols; ++x) out[x + 1] = texel(row + 3 * x);
+      out[cols + 1] = texel(row);
     }
     frame_.texels = texels_.data();
     frame_.textureWidth = cols;

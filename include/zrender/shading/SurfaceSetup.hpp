@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "zrender/base/Threads.hpp"
+#include "zrender/base/UninitializedAllocator.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/scene/Camera.hpp"
@@ -74,7 +75,7 @@ class SurfaceSetup {
   ShadingMode mode_;
   std::vector<CornerData> corners_;  // per mesh corner (Mesh::corners order)
   std::vector<FaceData> faces_;      // per mesh face
-  std::vector<uint32_t> texels_;     // the texture as 0x00RRGGBB, row 0 at the top
+  std::vector<uint32_t, UninitializedAllocator<uint32_t>> texels_;  // 0x00RRGGBB, row 0 on top
 
   // Per frame.
   const std::vector<Mat4>* modelView_ = nullptr;
