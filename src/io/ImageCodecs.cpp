@@ -86,31 +86,25 @@ bool writePng(const fs::path& path, const Image& image, const Threads& threads,
 Image readPng(const fs::path& path, std::string& error) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+  const auto failed = [&] {
     error = std::string("cannot be read as an image: ") + png.message;
     png_image_free(&png);
-    return {};
-  }
+    return Image();
+  };
+  if (!png_image_begin_read_from_file(&png, path.c_str())) return failed();
   const size_t width = png.width, height = png.height;
+  Image bgr(int(height), int(width), PixelFormat::kBgr8);
   if (!(png.format & PNG_FORMAT_FLAG_ALPHA)) {  // no alpha (nor tRNS): read as it is kept
     png.format = PNG_FORMAT_BGR;
-    Image bgr(int(height), int(width), PixelFormat::kBgr8);
-    if (!png_image_finish_read(&png, nullptr, bgr.data(), png_int_32(bgr.step()), nullptr)) {
-      error = std::string("cannot be read as an image: ") + png.message;
-      png_image_free(&png);
-      return {};
-    }
+    if (!png_image_finish_read(&png, nullptr, bgr.data(), png_int_32(bgr.step()), nullptr))
+      return failed();
     return bgr;
   }
   // Read with its alpha, then the alpha dropped (not blended: what cv::imread gives).
   png.format = PNG_FORMAT_BGRA;
   std::vector<uint8_t> bgra(width * height * 4);
-  if (!png_image_finish_read(&png, nullptr, bgra.data(), png_int_32(width * 4), nullptr)) {
-    error = std::string("cannot be read as an image: ") + png.message;
-    png_image_free(&png);
-    return {};
-  }
-  Image bgr(int(height), int(width), PixelFormat::kBgr8);
+  if (!png_image_finish_read(&png, nullptr, bgra.data(), png_int_32(width * 4), nullptr))
+    return failed();
   for (size_t y = 0; y < height; ++y) {
     const uint8_t* in = bgra.data() + y * width * 4;
     uint8_t* out = bgr.row(int(y));

@@ -9,17 +9,19 @@
 
 namespace zrender {
 
+// Each pixel format and the OpenCV type of the same pixels.
+struct FormatType {
+  PixelFormat format;
+  int cvType;
+};
+inline constexpr FormatType kFormatTypes[] = {{PixelFormat::kGray8, CV_8UC1},
+                                              {PixelFormat::kBgr8, CV_8UC3},
+                                              {PixelFormat::kGray16, CV_16UC1},
+                                              {PixelFormat::kFloat32, CV_32FC1}};
+
 inline int cvTypeOf(PixelFormat format) {
-  switch (format) {
-    case PixelFormat::kGray8:
-      return CV_8UC1;
-    case PixelFormat::kBgr8:
-      return CV_8UC3;
-    case PixelFormat::kGray16:
-      return CV_16UC1;
-    case PixelFormat::kFloat32:
-      return CV_32FC1;
-  }
+  for (const FormatType& f : kFormatTypes)
+    if (f.format == format) return f.cvType;
   return CV_8UC1;
 }
 
@@ -29,25 +31,15 @@ inline cv::Mat asMat(const Image& image) {
   return cv::Mat(image.rows(), image.cols(), cvTypeOf(image.format()), image.data(), image.step());
 }
 
-// The format of an Image that can hold `mat`'s type; false for none (CV_8UC1, CV_8UC3, CV_16UC1
-// and CV_32FC1 it takes).
+// The format of an Image that can hold `mat`'s type; false for none (kFormatTypes).
 inline bool formatOf(const cv::Mat& mat, PixelFormat& format) {
-  switch (mat.type()) {
-    case CV_8UC1:
-      format = PixelFormat::kGray8;
+  for (const FormatType& f : kFormatTypes) {
+    if (f.cvType == mat.type()) {
+      format = f.format;
       return true;
-    case CV_8UC3:
-      format = PixelFormat::kBgr8;
-      return true;
-    case CV_16UC1:
-      format = PixelFormat::kGray16;
-      return true;
-    case CV_32FC1:
-      format = PixelFormat::kFloat32;
-      return true;
-    default:
-      return false;
+    }
   }
+  return false;
 }
 
 // An Image over `mat`'s pixels, no copy (empty for a type formatOf does not take): `mat`'s
