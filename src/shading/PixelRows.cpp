@@ -34,12 +34,10 @@ ZRENDER_AVX2 void packBgrAvx2(const uint32_t* colors, int count, unsigned char* 
   // Each 128-bit half packs its four pixels into its low 12 bytes; the two halves are stored
   // 12 bytes apart, each store writing 4 bytes past its pixels that the next store (or the
   // scalar tail) overwrites: so the vector loop stops 2 pixels before the end.
-  const __m256i squeeze = _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1,
-                                           0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
   int x = 0;
   for (; x + 10 <= count; x += 8) {
-    const __m256i packed = _mm256_shuffle_epi8(
-        _mm256_loadu_si256(reinterpret_cast<const __m256i*>(colors + x)), squeeze);
+    const __m256i packed =
+        squeezeBgr(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(colors + x)));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + 3 * x), _mm256_castsi256_si128(packed));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out + 3 * x + 12),
                      _mm256_extracti128_si256(packed, 1));

@@ -71,6 +71,7 @@ Shader::Shader(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode
   else if (mode != ShadingMode::Depth)
     faceColors_.emplace(scene, mode);
   surfaceRow_ = surfaceRow();
+  surfaceBgrRow_ = surfaceBgrRow();
   packBgr_ = packBgr();
 }
 
@@ -257,7 +258,9 @@ void Shader::paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColor
   uint32_t* colors1 = colors0 + fb.width() + 16;
   for (int y = firstRow; y < endRow; ++y) {
     uint8_t* out = color.row(y);
-    if (scale_ == 1) {
+    if (scale_ == 1 && surface_ && surfaceBgrRow_) {
+      surfaceBgrRow_(*surface_, fb.row(y), fb.width(), y, background_, out);
+    } else if (scale_ == 1) {
       colorSampleRow(y, colors0, shared);
       packBgr_(colors0, width, out);
     } else if (mode_ == ShadingMode::Id) {

@@ -32,4 +32,9 @@ SurfaceRowFunction surfaceRow() {
   return cpuGathersQuickly() ? shadeSurfaceRowAvx2Gathers : shadeSurfaceRowAvx2;
 }
 
+SurfaceBgrRowFunction surfaceBgrRow() {
+  if (!cpuHasAvx2()) return nullptr;
+  return cpuGathersQuickly() ? shadeSurfaceBgrRowAvx2Gathers : shadeSurfaceBgrRowAvx2;
+}
+
 }  // namespace zrender

@@ -140,18 +140,53 @@ ZRENDER_AVX2 inline I idsAt(const DepthKey* keys) {
       _mm256_permute4x64_pd(_mm256_castps_pd(_mm256_shuffle_ps(a, b, 0x88)), 0xD8));
 }
 
+// Where a row's colors go, eight lanes at a time: lanes past the row's end, or past a run's
+// end, may be written with anything; a later run of the row writes over the latter.
+// As packed colors (0x00RRGGBB), with room for 8 past the row's end.
+struct ColorSink {
+  uint32_t* out;
+  ZRENDER_AVX2 void store(I rgb, int i) const {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), rgb);
+  }
+  ZRENDER_AVX2 void polygon(const uint32_t* colors, int x, int count) const {
+    std::copy(colors, colors + count, out + x);
+  }
+};
+
+// As the image's B, G, R bytes, nothing past the row's end: the row that follows may be
+// another thread's.
+struct BgrSink {
+  uint8_t* bgr;
+  int width;
+  ZRENDER_AVX2 void store(I rgb, int i) const {
+    // The halves' 12 bytes of pixels joined: 24 bytes of pixels and 8 zeros.
+    const I packed =
+        _mm256_permutevar8x32_epi32(squeezeBgr(rgb), _mm256_setr_epi32(0, 1, 2, 4, 5, 6, 7, 7));
+    if (i + 11 <= width) {  // all 32 bytes inside the row
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(bgr + 3 * i), packed);
+      return;
+    }
+    alignas(32) uint8_t last[32];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(last), packed);
+    std::memcpy(bgr + 3 * i, last, size_t(3 * std::min(8, width - i)));
+  }
+  ZRENDER_AVX2 void polygon(const uint32_t* colors, int x, int count) const {
+    packBgrScalar(colors, count, bgr + 3 * x);
+  }
+};
+
 // shadeSample's operations for the run of a triangle face (one fan) that starts at sample x
 // of row y, eight lanes at a time, with what the run's samples share (the planes' row values,
 // the ray's row) computed once. The run ends where `keys` (the row, `width` samples) holds
 // another face id than keys[x], found block by block as the colors are computed; returns that
-// end. The last block writes up to 7 colors past the run: `out` (the row's colors) must have
-// room for them.
-template <TexelReads reads>
+// end. The colors go to `sink` (ColorSink, BgrSink), the last block's with up to 7 past the
+// run.
+template <TexelReads reads, typename Sink>
 [[gnu::always_inline]] ZRENDER_AVX2 inline int shadeTriangleRun(const SurfaceFrame& f,
                                                                 const FaceSurface& face,
                                                                 const SurfaceFan& fan,
                                                                 const DepthKey* keys, int width,
-                                                                int x, int y, uint32_t* out) {
+                                                                int x, int y, const Sink& sink) {
   const float sy = float(y - face.originY);
   const RowPlanes planes(fan, sy);
   const RowPlane den = planes[kDen], pu = planes[kPu], pv = planes[kPv];
@@ -250,7 +285,7 @@ template <TexelReads reads>
     const I rgb = _mm256_or_si256(
         _mm256_or_si256(_mm256_slli_epi32(toByte(t[0]), 16), _mm256_slli_epi32(toByte(t[1]), 8)),
         toByte(t[2]));
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), rgb);
+    sink.store(rgb, i);
     if (count < 8) return i + count;
   }
 }
@@ -273,14 +308,15 @@ ZRENDER_AVX2 void shadeRun(const SurfaceFrame& frame, const FaceSurface& face,
   std::vector<DepthKey> keys(size_t(x + count) + 1, makeDepthKey(0.5f, 0));
   keys.back() = makeDepthKey(0.5f, 1);
   std::vector<uint32_t> colors(keys.size() + 8);
-  shadeTriangleRun<reads>(frame, face, *fans, keys.data(), int(keys.size()), x, y, colors.data());
+  shadeTriangleRun<reads>(frame, face, *fans, keys.data(), int(keys.size()), x, y,
+                          ColorSink{colors.data()});
   std::copy(colors.begin() + x, colors.begin() + x + count, out);
 }
 
-// A row as shadeSurfaceRowAvx2 colors it.
-template <TexelReads reads>
+// A row as shadeSurfaceRowAvx2 colors it, into `sink`.
+template <TexelReads reads, typename Sink>
 ZRENDER_AVX2 void shadeRow(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
-                           uint32_t background, uint32_t* out) {
+                           uint32_t background, const Sink& sink) {
   const SurfaceFrame& frame = setup.frame();
   for (int x = 0; x < width;) {
     const uint32_t id = keyFaceId(keys[x]);
@@ -288,20 +324,26 @@ ZRENDER_AVX2 void shadeRow(SurfaceSetup& setup, const DepthKey* keys, int width,
       // Like a run, a background run may write up to 7 colors past its end.
       const int end = runEndAvx2(keys, x, width);
       const I fill = _mm256_set1_epi32(int(background));
-      for (int i = x; i < end; i += 8)
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), fill);
+      for (int i = x; i < end; i += 8) sink.store(fill, i);
       x = end;
       continue;
     }
     const FaceSurface& face = setup.surface(id);
     const SurfaceFan* fans = setup.fans(face);
     if (face.fanCount == 1) {
-      x = shadeTriangleRun<reads>(frame, face, *fans, keys, width, x, y, out);
-    } else {
-      const int end = runEndAvx2(keys, x, width);
-      shadePolygonRun(frame, face, fans, x, y, end - x, out + x);
-      x = end;
+      x = shadeTriangleRun<reads>(frame, face, *fans, keys, width, x, y, sink);
+      continue;
     }
+    // A polygon's run, a piece at a time.
+    const int end = runEndAvx2(keys, x, width);
+    constexpr int kPiece = 64;
+    uint32_t colors[kPiece];
+    for (int i = x; i < end; i += kPiece) {
+      const int count = std::min(kPiece, end - i);
+      shadePolygonRun(frame, face, fans, i, y, count, colors);
+      sink.polygon(colors, i, count);
+    }
+    x = end;
   }
 }
 
@@ -319,12 +361,22 @@ void shadeSurfaceRunAvx2Gathers(const SurfaceFrame& frame, const FaceSurface& fa
 
 void shadeSurfaceRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
                          uint32_t background, uint32_t* out) {
-  shadeRow<TexelReads::Loads>(setup, keys, width, y, background, out);
+  shadeRow<TexelReads::Loads>(setup, keys, width, y, background, ColorSink{out});
 }
 
 void shadeSurfaceRowAvx2Gathers(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
                                 uint32_t background, uint32_t* out) {
-  shadeRow<TexelReads::Gathers>(setup, keys, width, y, background, out);
+  shadeRow<TexelReads::Gathers>(setup, keys, width, y, background, ColorSink{out});
+}
+
+void shadeSurfaceBgrRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                            uint32_t background, uint8_t* bgr) {
+  shadeRow<TexelReads::Loads>(setup, keys, width, y, background, BgrSink{bgr, width});
+}
+
+void shadeSurfaceBgrRowAvx2Gathers(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                                   uint32_t background, uint8_t* bgr) {
+  shadeRow<TexelReads::Gathers>(setup, keys, width, y, background, BgrSink{bgr, width});
 }
 
 }  // namespace zrender

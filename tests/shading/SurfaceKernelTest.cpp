@@ -1,7 +1,8 @@
 // SurfaceKernel: the vector versions (AVX2, eight lanes, texels read by loads or by gathers)
 // give the scalar reference's bits, on random faces (samples inside and outside the fan
 // triangle, degenerate fans, infinite and NaN planes, every mode, a texture read across its
-// wrap) and on the rows of real frames (background, polygons, runs of every length).
+// wrap) and on the rows of real frames (background, polygons, runs of every length), as colors
+// and as image bytes.
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include "zrender/base/CpuFeatures.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/render/Renderer.hpp"
+#include "zrender/shading/PixelRows.hpp"
 #include "zrender/shading/SurfaceKernel.hpp"
 #include "zrender/shading/SurfaceSetup.hpp"
 
@@ -24,19 +26,22 @@ namespace {
 using RunFunction = void (*)(const SurfaceFrame&, const FaceSurface&, const SurfaceFan*, int, int,
                              int, uint32_t*);
 using RowFunction = void (*)(SurfaceSetup&, const DepthKey*, int, int, uint32_t, uint32_t*);
+using BgrRowFunction = void (*)(SurfaceSetup&, const DepthKey*, int, int, uint32_t, uint8_t*);
 
 struct Version {
   std::string name;
   RunFunction run;
   RowFunction row;
+  BgrRowFunction bgrRow;
 };
 
 // The vector versions this CPU runs.
 std::vector<Version> vectorVersions() {
   std::vector<Version> versions;
   if (cpuHasAvx2()) {
-    versions.push_back({"avx2", shadeSurfaceRunAvx2, shadeSurfaceRowAvx2});
-    versions.push_back({"avx2 gathers", shadeSurfaceRunAvx2Gathers, shadeSurfaceRowAvx2Gathers});
+    versions.push_back({"avx2", shadeSurfaceRunAvx2, shadeSurfaceRowAvx2, shadeSurfaceBgrRowAvx2});
+    versions.push_back({"avx2 gathers", shadeSurfaceRunAvx2Gathers, shadeSurfaceRowAvx2Gathers,
+                        shadeSurfaceBgrRowAvx2Gathers});
   }
   return versions;
 }
@@ -146,7 +151,9 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
   EXPECT_GT(outside, 2000);
 }
 
-// The rows of a rendered frame, colored by every version from the same SurfaceSetup.
+// The rows of a rendered frame, colored by every version from the same SurfaceSetup, as colors
+// and as image bytes (the scalar colors packed by packBgrScalar), the bytes written up to the
+// row's end and not one past it.
 void expectRowsAgree(const Scene& scene, const std::string& label) {
   Renderer renderer(scene, "zbuffer");
   const Camera camera = makeCamera(scene);
@@ -158,14 +165,26 @@ void expectRowsAgree(const Scene& scene, const std::string& label) {
   SurfaceSetup setup(scene, scene.settings.shading);
   setup.begin(modelView, camera, fb.width(), fb.height());
   std::vector<uint32_t> expected(size_t(fb.width()) + 16), got(expected.size());
+  const size_t rowBytes = 3 * size_t(fb.width());
+  constexpr uint8_t kCanary = 0xA5;
+  std::vector<uint8_t> expectedBytes(rowBytes), gotBytes(rowBytes + 64);
   const uint32_t background = 0x123456;
   for (int y = 0; y < fb.height(); ++y) {
     shadeSurfaceRowScalar(setup, fb.row(y), fb.width(), y, background, expected.data());
+    packBgrScalar(expected.data(), fb.width(), expectedBytes.data());
     for (const Version& v : vectorVersions()) {
       v.row(setup, fb.row(y), fb.width(), y, background, got.data());
       for (int x = 0; x < fb.width(); ++x)
         ASSERT_EQ(got[size_t(x)], expected[size_t(x)])
             << label << ", " << v.name << ", sample " << x << ", " << y;
+      std::fill(gotBytes.begin(), gotBytes.end(), kCanary);
+      v.bgrRow(setup, fb.row(y), fb.width(), y, background, gotBytes.data());
+      for (size_t i = 0; i < rowBytes; ++i)
+        ASSERT_EQ(gotBytes[i], expectedBytes[i])
+            << label << ", " << v.name << " bytes, pixel " << i / 3 << ", " << y;
+      for (size_t i = rowBytes; i < gotBytes.size(); ++i)
+        ASSERT_EQ(gotBytes[i], kCanary) << label << ", " << v.name << ": byte " << i - rowBytes
+                                        << " past row " << y << " written";
     }
   }
   EXPECT_GT(test::coveredSamples(fb), 1000u) << label;
@@ -177,11 +196,16 @@ TEST(SurfaceKernel, VectorRowsGiveTheScalarBitsOnRealFrames) {
     for (const std::string name : {"spot", "shapes", "teapot"}) {
       SceneSettings s = test::projectScene(name);
       if (!std::filesystem::exists(s.modelPath)) continue;
-      s.width = s.height = 160;
-      s.shading = mode;
-      s.cull = name != "teapot";
-      Warnings warnings;
-      expectRowsAgree(loadScene(s, warnings), name + " " + shadingModeName(mode));
+      // A width of whole blocks of eight, and one that ends in a part of a block.
+      for (const int width : {160, 157}) {
+        s.width = width;
+        s.height = 160;
+        s.shading = mode;
+        s.cull = name != "teapot";
+        Warnings warnings;
+        expectRowsAgree(loadScene(s, warnings),
+                        name + " " + shadingModeName(mode) + " " + std::to_string(width));
+      }
     }
   }
 }

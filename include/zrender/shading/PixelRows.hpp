@@ -36,6 +36,14 @@ ZRENDER_AVX2 inline int runEndAvx2(const DepthKey* keys, int x, int width) {
   return end;
 }
 
+// Eight packed colors (0x00RRGGBB) as B, G, R bytes: each 128-bit half's four pixels in its low
+// 12 bytes, its top 4 bytes zero.
+ZRENDER_AVX2 inline __m256i squeezeBgr(__m256i colors) {
+  const __m256i squeeze = _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1,
+                                           0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
+  return _mm256_shuffle_epi8(colors, squeeze);
+}
+
 // Writes `count` packed colors (0x00RRGGBB) as BGR bytes into out[0, 3 count).
 void packBgrScalar(const uint32_t* colors, int count, unsigned char* out);
 // Eight pixels at a time. Call only when cpuHasAvx2().

@@ -81,6 +81,7 @@ class Shader {
   std::optional<FaceColors> faceColors_;  // one color per face
   std::optional<SurfaceSetup> surface_;   // attributes interpolated per sample
   SurfaceRowFunction surfaceRow_;
+  SurfaceBgrRowFunction surfaceBgrRow_;  // none: surfaceRow_, then packBgr_
   PackBgrFunction packBgr_;
 
   // Per frame.

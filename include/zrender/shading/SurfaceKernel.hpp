@@ -92,9 +92,21 @@ void shadeSurfaceRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, i
 void shadeSurfaceRowAvx2Gathers(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
                                 uint32_t background, uint32_t* out);
 
+// The same row written straight into an image row as B, G, R bytes, bgr[0, 3 width), nothing
+// past it: the bytes that packBgrScalar makes of the colors above, without a second pass over
+// the row.
+void shadeSurfaceBgrRowAvx2(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                            uint32_t background, uint8_t* bgr);
+void shadeSurfaceBgrRowAvx2Gathers(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
+                                   uint32_t background, uint8_t* bgr);
+
 using SurfaceRowFunction = void (*)(SurfaceSetup&, const DepthKey*, int, int, uint32_t, uint32_t*);
+using SurfaceBgrRowFunction = void (*)(SurfaceSetup&, const DepthKey*, int, int, uint32_t,
+                                       uint8_t*);
 // The AVX2 version where the CPU runs it (with gathers where they are quick), else the scalar
 // one.
 SurfaceRowFunction surfaceRow();
+// The AVX2 version where the CPU runs it, else none (the colors, then packBgr()).
+SurfaceBgrRowFunction surfaceBgrRow();
 
 }  // namespace zrender
