@@ -85,6 +85,8 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
     const int rowBegin = rows.rowBegin(int(b)), rowEnd = rows.rowEnd(int(b));
     band.rasterizer.begin(fb, rowBegin, rowEnd);
     band.stats = RenderStats();
+    // The band's leaves of this frame only: its geometry is kept from frame to frame.
+    band.geometry.counters = TransformCounters();
     traverse(input, OctreeNodeTest(input.camera, fb.width(), fb.height(), rowBegin, rowEnd), band,
              band.stats, [&](uint32_t leaf) {
                const GeometryVector<ScreenTriangle>& t =

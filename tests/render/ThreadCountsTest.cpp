@@ -95,6 +95,33 @@ TEST(ThreadCounts, SmallCrowd) {
   expectSameForEveryThreadCount(*crowd, "crowd", {2, 7});
 }
 
+TEST(ThreadCounts, EveryFrameCountsItsOwnWork) {
+  // The same camera twice gives the same counters: nothing a band keeps from the frame before
+  // (its geometry, its pyramid) is counted again.
+  const auto crowd = projectScene("crowd", 150);
+  if (!crowd) GTEST_SKIP() << "bunny is not linked under models/";
+  for (const std::string& algorithm : algorithmNames()) {
+    for (int threads : {1, 2, 3}) {
+      Renderer renderer(*crowd, algorithm, threads);
+      renderer.renderFrame(makeCamera(*crowd));
+      const RenderStats first = renderer.stats();
+      renderer.renderFrame(makeCamera(*crowd));
+      const RenderStats& second = renderer.stats();
+      const std::string label = algorithm + ", " + std::to_string(threads) + " threads";
+      EXPECT_GT(first.trianglesBackfaceCulled, 0u) << label;
+      EXPECT_EQ(second.trianglesBackfaceCulled, first.trianglesBackfaceCulled) << label;
+      EXPECT_EQ(second.trianglesClippedAway, first.trianglesClippedAway) << label;
+      EXPECT_EQ(second.trianglesDegenerate, first.trianglesDegenerate) << label;
+      EXPECT_EQ(second.trianglesRasterized, first.trianglesRasterized) << label;
+      EXPECT_EQ(second.trianglesHzbCulled, first.trianglesHzbCulled) << label;
+      EXPECT_EQ(second.octreeNodesVisited, first.octreeNodesVisited) << label;
+      EXPECT_EQ(second.pixelsTested, first.pixelsTested) << label;
+      EXPECT_EQ(second.pixelsWritten, first.pixelsWritten) << label;
+      EXPECT_EQ(second.extra, first.extra) << label;
+    }
+  }
+}
+
 TEST(ThreadCounts, GridWhoseEveryInstanceIsSeen) {
   // Random soups side by side, each overlapping its neighbours: every instance, from the
   // hierarchical z-buffer's first (nearest) to its last (farthest), has samples of its own in
