@@ -3,6 +3,8 @@
 #include <immintrin.h>
 
 #include <algorithm>
+#include <chrono>
+#include <climits>
 #include <cmath>
 #include <stdexcept>
 
@@ -13,11 +15,12 @@ namespace zrender {
 
 namespace {
 
-// Bands per thread: more than the other algorithms' kBandsPerThread. A band's work is where the
-// octree's leaves fall in its rows, and on a grid the front rows hold far more than the back
-// ones; thinner bands balance that better, until each band's own traversal of the upper nodes
-// costs more (measured: docs/performance.md, Two threads, 2026-11-26 (later)).
-constexpr int kOctreeBandsPerThread = 12;
+// Bands per thread, as for the other algorithms' kBandsPerThread, but where the octree's
+// leaves fall: on a grid the rows near the horizon hold far more work than the others, so the
+// bands start longest first (Threads::forEachInOrder); each band's own traversal of the upper
+// nodes and the leaves it shares with its neighbours cost more with more bands (measured:
+// docs/performance.md, Two threads, 2026-11-27 (fifth session)).
+constexpr int kOctreeBandsPerThread = 4;
 
 // Buffer rows are fetched this many triangles ahead of drawing.
 constexpr size_t kAhead = 4;
@@ -51,16 +54,21 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   FrameGeometry& g = input.geometry;
   if (!input.parallel()) {
     whole_.rasterizer.begin(fb);
-    traverse(input, OctreeNodeTest(input.camera, fb.width(), fb.height()), whole_, stats,
-             [&](uint32_t leaf) {
-               const size_t firstTriangle = g.triangles.size();
-               input.source.pullBatch(leafBatch_[leaf], g);
-               drawLeaf(whole_.rasterizer, g.triangles.data() + firstTriangle,
-                        g.triangles.size() - firstTriangle, stats);
-               // Drawn: the next leaf's triangles reuse the same, cached, storage instead of
-               // appending to megabytes of them.
-               g.triangles.resize(firstTriangle);
-             });
+    const OctreeNodeTest test(input.camera, fb.width(), fb.height());
+    traverse(
+        input, test, [&](uint32_t node) { return test.project(octree_.nodes()[node]); }, whole_,
+        stats,
+        [&](uint32_t leaf) {
+          const size_t firstTriangle = g.triangles.size();
+          input.source.pullBatch(leafBatch_[leaf], g);
+          const ScreenTriangle* triangles = g.triangles.data() + firstTriangle;
+          drawLeaf(
+              whole_.rasterizer, g.triangles.size() - firstTriangle,
+              [&](size_t t) -> const ScreenTriangle& { return triangles[t]; }, stats);
+          // Drawn: the next leaf's triangles reuse the same, cached, storage instead of
+          // appending to megabytes of them.
+          g.triangles.resize(firstTriangle);
+        });
     whole_.rasterizer.finish();
     return;
   }
@@ -69,33 +77,62 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   const RowSpan busy = screenRows(input.scene, input.camera, fb.height());
   const RowBands rows(fb.height(), threads.count() * kOctreeBandsPerThread, DepthPyramid::kTileSize,
                       busy.begin, busy.end);
+  const int bandCount = rows.count();
   const size_t batches = batches_.size() - 1;
   if (!leafState_ || leafTriangles_.size() != batches) {
     leafState_ = std::make_unique<std::atomic<uint8_t>[]>(batches);
     leafTriangles_.resize(batches);
+    leafRows_.resize(batches);
   }
   for (size_t b = 0; b < batches; ++b) leafState_[b].store(0, std::memory_order_relaxed);
-  bands_.resize(size_t(rows.count()));
+  const size_t nodeCount = octree_.nodes().size();
+  if (!nodeState_ || nodeBounds_.size() != nodeCount) {
+    nodeState_ = std::make_unique<std::atomic<uint8_t>[]>(nodeCount);
+    nodeBounds_.resize(nodeCount);
+  }
+  for (size_t n = 0; n < nodeCount; ++n) nodeState_[n].store(0, std::memory_order_relaxed);
+  bands_.resize(size_t(bandCount));
   // The bands' leaves are pulled into geometry of their own, never the frame's; the shader's
   // face colors, which need none, are prepared now, so that each band is shaded by the thread
   // that finishes it, while its keys are in cache (surfaces wait for the whole buffer).
   input.facesReady({});
-  threads.forEach(size_t(rows.count()), [&](size_t b) {
+  // Longest band first, as the last frame measured them: a long band started last would end
+  // last, while the other threads wait.
+  const std::vector<uint32_t> order = longestFirst(rows, fb.height());
+  bandMs_.assign(size_t(bandCount), 0.0);
+  threads.forEachInOrder(order, [&](size_t b) {
+    const auto start = std::chrono::steady_clock::now();
     Band& band = bands_[b];
     const int rowBegin = rows.rowBegin(int(b)), rowEnd = rows.rowEnd(int(b));
     band.rasterizer.begin(fb, rowBegin, rowEnd);
     band.stats = RenderStats();
     // The band's leaves of this frame only: its geometry is kept from frame to frame.
     band.geometry.counters = TransformCounters();
-    traverse(input, OctreeNodeTest(input.camera, fb.width(), fb.height(), rowBegin, rowEnd), band,
-             band.stats, [&](uint32_t leaf) {
-               const GeometryVector<ScreenTriangle>& t =
-                   leafTriangles(leafBatch_[leaf], input.source, band.geometry);
-               drawLeaf(band.rasterizer, t.data(), t.size(), band.stats);
-             });
+    const OctreeNodeTest test(input.camera, fb.width(), fb.height(), rowBegin, rowEnd);
+    traverse(
+        input, test, [&](uint32_t node) { return nodeBounds(node, test); }, band, band.stats,
+        [&](uint32_t leaf) {
+          const uint32_t batch = leafBatch_[leaf];
+          const GeometryVector<ScreenTriangle>& t =
+              leafTriangles(batch, input.source, band.geometry);
+          // Only the triangles that reach the band's rows: a leaf crossing band edges
+          // is drawn by each band it reaches, and its triangles, transformed by another
+          // thread, are cache misses here.
+          const std::vector<RowRange>& ranges = leafRows_[batch];
+          std::vector<uint32_t>& kept = band.kept;
+          kept.clear();
+          for (uint32_t i = 0; i < ranges.size(); ++i)
+            if (ranges[i].last >= rowBegin && ranges[i].first < rowEnd) kept.push_back(i);
+          drawLeaf(
+              band.rasterizer, kept.size(),
+              [&](size_t k) -> const ScreenTriangle& { return t[kept[k]]; }, band.stats);
+        });
     band.rasterizer.finish();
     input.rowsReady(rowBegin, rowEnd);
+    bandMs_[b] =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   });
+  keepRowCosts(rows, fb.height());
   for (const Band& band : bands_) {
     stats += band.stats;
     g.counters.backfaceCulled += band.geometry.counters.backfaceCulled;
@@ -116,6 +153,15 @@ const GeometryVector<ScreenTriangle>& OctreeAlgorithm::leafTriangles(uint32_t ba
     scratch.vertices.clear();
     source.pullBatch(batch, scratch);
     leafTriangles_[batch].assign(scratch.triangles.begin(), scratch.triangles.end());
+    std::vector<RowRange>& ranges = leafRows_[batch];
+    ranges.resize(scratch.triangles.size());
+    for (size_t i = 0; i < ranges.size(); ++i) {
+      const FixedPoint* v = scratch.triangles[i].v;
+      const int first = firstSampleAtOrAfter(std::min({v[0].y, v[1].y, v[2].y}));
+      const int last = lastSampleAtOrBefore(std::max({v[0].y, v[1].y, v[2].y}));
+      ranges[i] = RowRange{int16_t(std::clamp(first, 0, INT16_MAX)),
+                           int16_t(std::clamp(last, -1, INT16_MAX))};
+    }
     state.store(2, std::memory_order_release);
   }
   // Another band transforms it: a leaf takes microseconds.
@@ -123,20 +169,58 @@ const GeometryVector<ScreenTriangle>& OctreeAlgorithm::leafTriangles(uint32_t ba
   return leafTriangles_[batch];
 }
 
-void OctreeAlgorithm::drawLeaf(HzbRasterizer& rasterizer, const ScreenTriangle* triangles,
-                               size_t count, RenderStats& stats) {
-  // The leaf's screen region was usually not drawn recently: fetch the buffer rows of a
-  // triangle a few places ahead while drawing.
-  for (size_t t = 0; t < std::min(count, kAhead); ++t) rasterizer.prefetch(triangles[t]);
-  for (size_t t = 0; t < count; ++t) {
-    if (t + kAhead < count) rasterizer.prefetch(triangles[t + kAhead]);
-    rasterizer.drawTriangle(triangles[t], stats);
+std::vector<uint32_t> OctreeAlgorithm::longestFirst(const RowBands& rows, int height) const {
+  std::vector<uint32_t> order(static_cast<size_t>(rows.count()));
+  std::vector<double> cost(order.size(), 0.0);
+  const bool known = rowCosts_.size() == size_t(height);
+  for (int b = 0; b < rows.count(); ++b) {
+    order[size_t(b)] = uint32_t(b);
+    if (known)
+      for (int y = rows.rowBegin(b); y < rows.rowEnd(b); ++y)
+        cost[size_t(b)] += rowCosts_[size_t(y)];
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return cost[a] > cost[b]; });
+  return order;
+}
+
+void OctreeAlgorithm::keepRowCosts(const RowBands& rows, int height) {
+  rowCosts_.resize(size_t(height));
+  for (int b = 0; b < rows.count(); ++b) {
+    const int begin = rows.rowBegin(b), end = rows.rowEnd(b);
+    std::fill(rowCosts_.begin() + begin, rowCosts_.begin() + end,
+              bandMs_[size_t(b)] / (end - begin));
   }
 }
 
-template <typename DrawLeaf>
-void OctreeAlgorithm::traverse(const FrameInput& input, const OctreeNodeTest& test, Band& band,
-                               RenderStats& stats, const DrawLeaf& drawLeaf) const {
+NodeBounds OctreeAlgorithm::nodeBounds(uint32_t node, const OctreeNodeTest& test) {
+  std::atomic<uint8_t>& state = nodeState_[node];
+  if (state.load(std::memory_order_acquire) == 2) return nodeBounds_[node];
+  uint8_t expected = 0;
+  if (!state.compare_exchange_strong(expected, 1, std::memory_order_acq_rel))
+    // Another band projects it now: projecting it here too costs less than waiting.
+    return test.project(octree_.nodes()[node]);
+  nodeBounds_[node] = test.project(octree_.nodes()[node]);
+  state.store(2, std::memory_order_release);
+  return nodeBounds_[node];
+}
+
+template <typename Triangle>
+void OctreeAlgorithm::drawLeaf(HzbRasterizer& rasterizer, size_t count, const Triangle& triangle,
+                               RenderStats& stats) {
+  // The leaf's screen region was usually not drawn recently: fetch the buffer rows of a
+  // triangle a few places ahead while drawing.
+  for (size_t t = 0; t < std::min(count, kAhead); ++t) rasterizer.prefetch(triangle(t));
+  for (size_t t = 0; t < count; ++t) {
+    if (t + kAhead < count) rasterizer.prefetch(triangle(t + kAhead));
+    rasterizer.drawTriangle(triangle(t), stats);
+  }
+}
+
+template <typename Bounds, typename DrawLeaf>
+void OctreeAlgorithm::traverse(const FrameInput& input, const OctreeNodeTest& test,
+                               const Bounds& bounds, Band& band, RenderStats& stats,
+                               const DrawLeaf& drawLeaf) const {
   std::vector<uint32_t>& stack = band.stack;
   const std::vector<OctreeNode>& nodes = octree_.nodes();
   const Vec3& eye = input.camera.eye;
@@ -147,7 +231,7 @@ void OctreeAlgorithm::traverse(const FrameInput& input, const OctreeNodeTest& te
     const OctreeNode& node = nodes[nodeIndex];
     stack.pop_back();
     ++stats.octreeNodesVisited;
-    if (test.hidden(node, band.rasterizer.pyramid())) {
+    if (test.hidden(bounds(nodeIndex), band.rasterizer.pyramid())) {
       ++stats.octreeNodesCulled;
       continue;
     }

@@ -23,7 +23,8 @@ OctreeNodeTest::OctreeNodeTest(const Camera& camera, int widthSamples, int heigh
       rowBegin_(rowBegin),
       rowEnd_(rowEnd < 0 ? heightSamples : rowEnd) {}
 
-bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid) const {
+NodeBounds OctreeNodeTest::project(const OctreeNode& node) const {
+  NodeBounds b;
   // Clip-space corners: base + any subset of the three edge vectors.
   const Vec4 base = vp_ * Vec4(node.lo[0], node.lo[1], node.lo[2], 1.0);
   Vec4 edge[3];
@@ -45,8 +46,11 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
     all &= code;
     inFront = inFront && p[3] > 0.0 && p[2] > -p[3];
   }
-  if (all) return true;  // every face below is clipped away
-  if (!inFront) return false;
+  if (all) {
+    b.kind = NodeBounds::kClipped;
+    return b;
+  }
+  if (!inFront) return b;
 
   double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL, z0 = HUGE_VAL;
   double w0 = HUGE_VAL;
@@ -60,20 +64,30 @@ bool OctreeNodeTest::hidden(const OctreeNode& node, const DepthPyramid& pyramid)
     z0 = std::min(z0, z);
     w0 = std::min(w0, p[3]);
   }
-  if (!(x0 <= x1 && y0 <= y1 && z0 == z0 && w0 > 0.0)) return false;
+  if (!(x0 <= x1 && y0 <= y1 && z0 == z0 && w0 > 0.0)) return b;
+  b.kind = NodeBounds::kOnScreen;
   // Samples whose centre (i + 0.5) may be covered, with a sample of slack for snapping.
   const double minX = std::max(std::floor(x0 - 1.5), 0.0);
   const double maxX = std::min(std::ceil(x1 + 0.5), width_ - 1.0);
-  const double minY = std::max(std::floor(y0 - 1.5), rowBegin_);
-  const double maxY = std::min(std::ceil(y1 + 0.5), rowEnd_ - 1.0);
-  if (minX > maxX || minY > maxY) return true;  // off screen (or off the band)
+  const double minY = std::max(std::floor(y0 - 1.5), 0.0);
+  const double maxY = std::min(std::ceil(y1 + 0.5), height_ - 1.0);
+  if (minX > maxX || minY > maxY) return b;  // off screen: the empty rectangle
+  b.minX = int(minX), b.maxX = int(maxX), b.minY = int(minY), b.maxY = int(maxY);
   // No sample of a face is nearer than the face's nearest corner (DepthPlane clamps to its
   // corner depths), and the corners lie in the box: below the box's nearest corner by the
   // rounding of the two matrix products only.
   const double low = z0 - 1e-6 * (1.0 + std::abs(z0));
   // With the node's smallest id, the key is no greater than any key of its faces.
-  const DepthKey key = keyAtOrBelow(low, node.minFace);
-  return pyramid.occludes(int(minX), int(minY), int(maxX), int(maxY), key, kNodeQueryNodes);
+  b.key = keyAtOrBelow(low, node.minFace);
+  return b;
+}
+
+bool OctreeNodeTest::hidden(const NodeBounds& b, const DepthPyramid& pyramid) const {
+  if (b.kind == NodeBounds::kClipped) return true;
+  if (b.kind == NodeBounds::kKept) return false;
+  const int minY = std::max(b.minY, rowBegin_), maxY = std::min(b.maxY, rowEnd_ - 1);
+  if (b.minX > b.maxX || minY > maxY) return true;  // off screen (or off the band)
+  return pyramid.occludes(b.minX, minY, b.maxX, maxY, b.key, kNodeQueryNodes);
 }
 
 }  // namespace zrender

@@ -1,8 +1,11 @@
 #pragma once
 
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <thread>
+#include <vector>
 
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/global_control.h>
@@ -110,6 +113,18 @@ class Threads {
       });
     });
     edges.join();
+  }
+
+  // f(order[k]) for every k: started in that order, each by whichever thread is free first. With
+  // `order` sorted longest first, the threads end together as nearly as the tasks allow (a long
+  // task started last ends last); forEach() lets the threads split the indices in halves.
+  template <typename F>
+  void forEachInOrder(const std::vector<uint32_t>& order, const F& f) const {
+    std::atomic<size_t> next{0};
+    forEach(size_t(count_), [&](size_t) {
+      for (size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < order.size();)
+        f(size_t(order[k]));
+    });
   }
 
   // f(begin, end) over [0, n) cut into ranges of about `grain` indices, spread over the

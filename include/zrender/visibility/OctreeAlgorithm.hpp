@@ -4,6 +4,7 @@
 #include <memory>
 #include <vector>
 
+#include "zrender/raster/RowBands.hpp"
 #include "zrender/visibility/HzbRasterizer.hpp"
 #include "zrender/visibility/Octree.hpp"
 #include "zrender/visibility/OctreeNodeTest.hpp"
@@ -17,7 +18,8 @@ namespace zrender {
 // everything below it. Faces of the other leaves are transformed lazily and their triangles
 // go through the pyramid test of HzbRasterizer. With several threads, the image is cut into
 // bands of rows, each traversing the octree against a pyramid of its own and drawing the
-// leaves it keeps clipped to its rows; the first band to keep a leaf transforms it for all.
+// leaves it keeps clipped to its rows; the first band to keep a leaf transforms it for all,
+// the first to reach a node projects its box for all, and the bands start longest first.
 class OctreeAlgorithm : public VisibilityAlgorithm {
  public:
   // `leafFaces`: the octree's leaf size (Octree::build); other sizes are for measurements.
@@ -38,14 +40,29 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
     std::vector<uint32_t> stack;  // nodes still to visit, nearest on top
     FrameGeometry geometry;       // several threads: where the band transforms leaves
     RenderStats stats;
+    std::vector<uint32_t> kept;  // several threads: the drawn leaf's triangles in the band
+  };
+  // A triangle's sample rows [first, last] (first > last: none), clamped to 16 bits.
+  struct RowRange {
+    int16_t first, last;
   };
   // Traverses the octree front to back, drawing the leaves it keeps through band.rasterizer,
   // begun for the rows `test` tests: drawLeaf(leafNode) draws one.
-  template <typename DrawLeaf>
-  void traverse(const FrameInput& input, const OctreeNodeTest& test, Band& band, RenderStats& stats,
-                const DrawLeaf& drawLeaf) const;
-  // Draws a leaf's triangles.
-  static void drawLeaf(HzbRasterizer& rasterizer, const ScreenTriangle* triangles, size_t count,
+  // bounds(node) gives the node's NodeBounds.
+  template <typename Bounds, typename DrawLeaf>
+  void traverse(const FrameInput& input, const OctreeNodeTest& test, const Bounds& bounds,
+                Band& band, RenderStats& stats, const DrawLeaf& drawLeaf) const;
+  // The bands of `rows` in the order to start them: by the last frame's time over their rows,
+  // longest first (in row order when the image's height has changed).
+  std::vector<uint32_t> longestFirst(const RowBands& rows, int height) const;
+  // Keeps this frame's band times (bandMs_) as times per row, for the next frame's order.
+  void keepRowCosts(const RowBands& rows, int height);
+  // With several threads: node `node`'s bounds, projected by the first band that asks and
+  // kept for the others (a node's projection costs more than its test against a pyramid).
+  NodeBounds nodeBounds(uint32_t node, const OctreeNodeTest& test);
+  // Draws a leaf's `count` triangles, triangle(i) for i in [0, count).
+  template <typename Triangle>
+  static void drawLeaf(HzbRasterizer& rasterizer, size_t count, const Triangle& triangle,
                        RenderStats& stats);
   // With several threads: the triangles of batch `batch`, transformed by the first band that
   // asks (into its `scratch`) while the others wait for them.
@@ -60,6 +77,14 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
   // 2 done; and its triangles.
   std::unique_ptr<std::atomic<uint8_t>[]> leafState_;
   std::vector<GeometryVector<ScreenTriangle>> leafTriangles_;
+  std::vector<std::vector<RowRange>> leafRows_;  // per batch: its triangles' rows
+  // With several threads: the last frame's time of each band (ms), and of each sample row (its
+  // band's spread evenly over the band's rows), to start the longest bands first.
+  std::vector<double> bandMs_, rowCosts_;
+  // With several threads, per node: 0 not projected yet this frame, 1 being projected, 2 done;
+  // and its bounds.
+  std::unique_ptr<std::atomic<uint8_t>[]> nodeState_;
+  std::vector<NodeBounds> nodeBounds_;
   std::vector<uint32_t> batches_;    // leaf boundaries in octree_.faces(), in order
   std::vector<uint32_t> leafBatch_;  // per node: its batch, for leaves
 };
