@@ -194,7 +194,7 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
   // bands draw the last instance and are finished and shaded, each by the thread that drew it,
   // while its keys are in that thread's cache.
   input.facesReady(faces);
-  threads.forEach(size_t(bands.count()), [&](size_t b) {
+  bandOrder_.forEachBand(threads, bands, [&](size_t b) {
     if (!instances_.empty()) drawBand(b);
     bandRasterizers_[b].finish();
     input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));

@@ -3,7 +3,6 @@
 #include <immintrin.h>
 
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
@@ -17,7 +16,7 @@ namespace {
 
 // Bands per thread, as for the other algorithms' kBandsPerThread, but where the octree's
 // leaves fall: on a grid the rows near the horizon hold far more work than the others, so the
-// bands start longest first (Threads::forEachInOrder); each band's own traversal of the upper
+// bands start longest first (BandOrder); each band's own traversal of the upper
 // nodes and the leaves it shares with its neighbours cost more with more bands (measured:
 // docs/performance.md, Two threads, 2026-11-27 (fifth session)).
 constexpr int kOctreeBandsPerThread = 4;
@@ -77,7 +76,6 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   const RowSpan busy = screenRows(input.scene, input.camera, fb.height());
   const RowBands rows(fb.height(), threads.count() * kOctreeBandsPerThread, DepthPyramid::kTileSize,
                       busy.begin, busy.end);
-  const int bandCount = rows.count();
   const size_t batches = batches_.size() - 1;
   if (!leafState_ || leafTriangles_.size() != batches) {
     leafState_ = std::make_unique<std::atomic<uint8_t>[]>(batches);
@@ -91,17 +89,12 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
     nodeBounds_.resize(nodeCount);
   }
   for (size_t n = 0; n < nodeCount; ++n) nodeState_[n].store(0, std::memory_order_relaxed);
-  bands_.resize(size_t(bandCount));
+  bands_.resize(size_t(rows.count()));
   // The bands' leaves are pulled into geometry of their own, never the frame's; the shader's
   // face colors, which need none, are prepared now, so that each band is shaded by the thread
   // that finishes it, while its keys are in cache (surfaces wait for the whole buffer).
   input.facesReady({});
-  // Longest band first, as the last frame measured them: a long band started last would end
-  // last, while the other threads wait.
-  const std::vector<uint32_t> order = longestFirst(rows, fb.height());
-  bandMs_.assign(size_t(bandCount), 0.0);
-  threads.forEachInOrder(order, [&](size_t b) {
-    const auto start = std::chrono::steady_clock::now();
+  bandOrder_.forEachBand(threads, rows, [&](size_t b) {
     Band& band = bands_[b];
     const int rowBegin = rows.rowBegin(int(b)), rowEnd = rows.rowEnd(int(b));
     band.rasterizer.begin(fb, rowBegin, rowEnd);
@@ -129,10 +122,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
         });
     band.rasterizer.finish();
     input.rowsReady(rowBegin, rowEnd);
-    bandMs_[b] =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   });
-  keepRowCosts(rows, fb.height());
   for (const Band& band : bands_) {
     stats += band.stats;
     g.counters.backfaceCulled += band.geometry.counters.backfaceCulled;
@@ -167,30 +157,6 @@ const GeometryVector<ScreenTriangle>& OctreeAlgorithm::leafTriangles(uint32_t ba
   // Another band transforms it: a leaf takes microseconds.
   while (state.load(std::memory_order_acquire) != 2) _mm_pause();
   return leafTriangles_[batch];
-}
-
-std::vector<uint32_t> OctreeAlgorithm::longestFirst(const RowBands& rows, int height) const {
-  std::vector<uint32_t> order(static_cast<size_t>(rows.count()));
-  std::vector<double> cost(order.size(), 0.0);
-  const bool known = rowCosts_.size() == size_t(height);
-  for (int b = 0; b < rows.count(); ++b) {
-    order[size_t(b)] = uint32_t(b);
-    if (known)
-      for (int y = rows.rowBegin(b); y < rows.rowEnd(b); ++y)
-        cost[size_t(b)] += rowCosts_[size_t(y)];
-  }
-  std::stable_sort(order.begin(), order.end(),
-                   [&](uint32_t a, uint32_t b) { return cost[a] > cost[b]; });
-  return order;
-}
-
-void OctreeAlgorithm::keepRowCosts(const RowBands& rows, int height) {
-  rowCosts_.resize(size_t(height));
-  for (int b = 0; b < rows.count(); ++b) {
-    const int begin = rows.rowBegin(b), end = rows.rowEnd(b);
-    std::fill(rowCosts_.begin() + begin, rowCosts_.begin() + end,
-              bandMs_[size_t(b)] / (end - begin));
-  }
 }
 
 NodeBounds OctreeAlgorithm::nodeBounds(uint32_t node, const OctreeNodeTest& test) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "zrender/raster/BandOrder.hpp"
 #include "zrender/raster/TriangleBands.hpp"
 #include "zrender/visibility/HzbRasterizer.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
@@ -40,6 +41,7 @@ class HierarchicalAlgorithm : public VisibilityAlgorithm {
   std::vector<std::vector<FrameGeometry>> instanceParts_;
   BandLists<const ScreenTriangle*> bandTriangles_;
   std::vector<RenderStats> bandStats_;
+  BandOrder bandOrder_;  // several threads: the last bands longest first, by the last frame's
   std::vector<uint32_t> instances_;  // this frame's instance order, nearest first
 };
 

@@ -4,7 +4,7 @@
 #include <memory>
 #include <vector>
 
-#include "zrender/raster/RowBands.hpp"
+#include "zrender/raster/BandOrder.hpp"
 #include "zrender/visibility/HzbRasterizer.hpp"
 #include "zrender/visibility/Octree.hpp"
 #include "zrender/visibility/OctreeNodeTest.hpp"
@@ -52,11 +52,6 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
   template <typename Bounds, typename DrawLeaf>
   void traverse(const FrameInput& input, const OctreeNodeTest& test, const Bounds& bounds,
                 Band& band, RenderStats& stats, const DrawLeaf& drawLeaf) const;
-  // The bands of `rows` in the order to start them: by the last frame's time over their rows,
-  // longest first (in row order when the image's height has changed).
-  std::vector<uint32_t> longestFirst(const RowBands& rows, int height) const;
-  // Keeps this frame's band times (bandMs_) as times per row, for the next frame's order.
-  void keepRowCosts(const RowBands& rows, int height);
   // With several threads: node `node`'s bounds, projected by the first band that asks and
   // kept for the others (a node's projection costs more than its test against a pyramid).
   NodeBounds nodeBounds(uint32_t node, const OctreeNodeTest& test);
@@ -78,9 +73,7 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
   std::unique_ptr<std::atomic<uint8_t>[]> leafState_;
   std::vector<GeometryVector<ScreenTriangle>> leafTriangles_;
   std::vector<std::vector<RowRange>> leafRows_;  // per batch: its triangles' rows
-  // With several threads: the last frame's time of each band (ms), and of each sample row (its
-  // band's spread evenly over the band's rows), to start the longest bands first.
-  std::vector<double> bandMs_, rowCosts_;
+  BandOrder bandOrder_;  // several threads: the bands' order, from the last frame's times
   // With several threads, per node: 0 not projected yet this frame, 1 being projected, 2 done;
   // and its bounds.
   std::unique_ptr<std::atomic<uint8_t>[]> nodeState_;

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "zrender/raster/BandOrder.hpp"
 #include "zrender/raster/PolygonEdges.hpp"
 #include "zrender/raster/RenderStats.hpp"
 #include "zrender/raster/RowBands.hpp"
@@ -11,7 +12,8 @@ namespace zrender {
 
 // How the scan-line algorithms draw a frame on several threads: the image cut into bands of
 // rows, each drawn by one thread from polygon tables of its own (PolygonTables::build for a
-// band) and shaded by it; the counters of the bands added up in band order. The frame's faces
+// band) and shaded by it, the longest bands first (BandOrder); the counters of the bands added
+// up in band order. The frame's faces
 // come in parts (GeometrySource::pullAllParts): a big frame's are not joined into one
 // geometry, a copy of all of them.
 class PolygonBands {
@@ -40,7 +42,7 @@ class PolygonBands {
           faces_[k] = PartFace{uint32_t(part), uint32_t(f)};
         });
     bandStats_.assign(size_t(bands.count()), RenderStats());
-    threads.forEach(size_t(bands.count()), [&](size_t b) {
+    order_.forEachBand(threads, bands, [&](size_t b) {
       const int thread = threads.slot(), rowBegin = bands.rowBegin(int(b));
       const int rowEnd = bands.rowEnd(int(b));
       PolygonTables& tables = tablesOf(thread);
@@ -59,6 +61,7 @@ class PolygonBands {
   BandPlacer placer_;
   std::vector<PartFace> faces_;  // the faces of each band, band after band
   std::vector<RenderStats> bandStats_;
+  BandOrder order_;  // the bands longest first, by the last frame's times
 };
 
 }  // namespace zrender
