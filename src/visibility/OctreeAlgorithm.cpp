@@ -3,10 +3,11 @@
 #include <immintrin.h>
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
+#include "zrender/raster/RasterRules.hpp"
 #include "zrender/raster/RowBands.hpp"
 #include "zrender/scene/ScreenRows.hpp"
 
@@ -147,10 +148,8 @@ const GeometryVector<ScreenTriangle>& OctreeAlgorithm::leafTriangles(uint32_t ba
     ranges.resize(scratch.triangles.size());
     for (size_t i = 0; i < ranges.size(); ++i) {
       const FixedPoint* v = scratch.triangles[i].v;
-      const int first = firstSampleAtOrAfter(std::min({v[0].y, v[1].y, v[2].y}));
-      const int last = lastSampleAtOrBefore(std::max({v[0].y, v[1].y, v[2].y}));
-      ranges[i] = RowRange{int16_t(std::clamp(first, 0, INT16_MAX)),
-                           int16_t(std::clamp(last, -1, INT16_MAX))};
+      const SampleRect r = sampleBounds(v[0], v[1], v[2], scratch.width, scratch.height);
+      ranges[i] = RowRange{int16_t(std::min(r.minY, INT16_MAX)), int16_t(std::max(r.maxY, -1))};
     }
     state.store(2, std::memory_order_release);
   }

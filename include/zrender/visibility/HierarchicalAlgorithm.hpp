@@ -41,7 +41,7 @@ class HierarchicalAlgorithm : public VisibilityAlgorithm {
   std::vector<std::vector<FrameGeometry>> instanceParts_;
   BandLists<const ScreenTriangle*> bandTriangles_;
   std::vector<RenderStats> bandStats_;
-  BandOrder bandOrder_;  // several threads: the last bands longest first, by the last frame's
+  BandOrder bandOrder_;              // several threads: the order of the bands' last loop
   std::vector<uint32_t> instances_;  // this frame's instance order, nearest first
 };
 

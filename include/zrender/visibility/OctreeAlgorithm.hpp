@@ -42,7 +42,7 @@ class OctreeAlgorithm : public VisibilityAlgorithm {
     RenderStats stats;
     std::vector<uint32_t> kept;  // several threads: the drawn leaf's triangles in the band
   };
-  // A triangle's sample rows [first, last] (first > last: none), clamped to 16 bits.
+  // A triangle's sample rows [first, last] in the image (first > last: none), in 16 bits.
   struct RowRange {
     int16_t first, last;
   };

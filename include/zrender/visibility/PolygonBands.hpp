@@ -13,9 +13,8 @@ namespace zrender {
 // How the scan-line algorithms draw a frame on several threads: the image cut into bands of
 // rows, each drawn by one thread from polygon tables of its own (PolygonTables::build for a
 // band) and shaded by it, the longest bands first (BandOrder); the counters of the bands added
-// up in band order. The frame's faces
-// come in parts (GeometrySource::pullAllParts): a big frame's are not joined into one
-// geometry, a copy of all of them.
+// up in band order. The frame's faces come in parts (GeometrySource::pullAllParts): a big
+// frame's are not joined into one geometry, a copy of all of them.
 class PolygonBands {
  public:
   // drawBand(thread, tablesBuiltFor(band), rowEnd, stats) draws one band with the state of
