@@ -24,6 +24,15 @@ With --idle, each round waits (up to a minute) until the machine has been idle f
 second (the other processes using under a tenth of the processors), so that a round does not
 start while another job is building or testing; the rounds that could not wait are counted.
 
+With --variant ARGS (repeated), each binary runs once per variant in every round, the
+variant's arguments added to ZRENDER-ARGS, and each line also gives the median over the rounds
+of the first line's frame_ms divided by its own: e.g. the speed-up of two threads over one,
+frames rendered one after another as --repeat renders them (docs/performance.md, Two threads in
+the bench and alone):
+
+    tools/ab.py --variant "--threads 1" --variant "--threads 2" build/zrender -- bunny \
+        --alg interval --repeat 9 -o /tmp/x.png
+
 Give -o: without it every run writes SCENE.png into the current folder. Exit status 2 on bad
 arguments or when a run fails or prints no JSON.
 """
@@ -99,6 +108,8 @@ def main():
     parser.add_argument("--runs", type=int, default=7, help="rounds (default 7)")
     parser.add_argument("--wall", action="store_true", help="time whole runs (seconds)")
     parser.add_argument("--idle", action="store_true", help="start each round on an idle machine")
+    parser.add_argument("--variant", action="append", default=[],
+                        help="arguments added to ZRENDER-ARGS: one run per variant and binary")
     parser.add_argument("binaries", nargs="+", help="zrender executables to compare")
     options = parser.parse_args(argv[:split])
     if options.runs < 1:
@@ -106,48 +117,52 @@ def main():
     args = argv[split + 1:]
     if not args:
         fail("no zrender arguments after --")
+    # What runs in each round, in order: a binary with a variant's arguments (label, argv).
+    variants = [(v, v.split()) for v in options.variant] or [("", [])]
+    runs = [(f"{b} {v}".strip(), b, extra) for b in options.binaries for v, extra in variants]
 
     busy_rounds = 0
     if options.wall:
-        seconds = {b: [] for b in options.binaries}
+        seconds = {label: [] for label, _, _ in runs}
         for round_ in range(options.runs):
             if options.idle and not wait_idle():
                 busy_rounds += 1
             # Every other round in reverse order, so that no binary always runs first.
-            order = options.binaries if round_ % 2 == 0 else options.binaries[::-1]
-            for binary in order:
-                seconds[binary].append(wall_once(binary, args))
-        width = max(len(b) for b in options.binaries)
+            for label, binary, extra in runs if round_ % 2 == 0 else runs[::-1]:
+                seconds[label].append(wall_once(binary, args + extra))
+        width = max(len(label) for label in seconds)
         print(f"wall seconds of {options.runs} alternated runs of: {' '.join(args)}")
         if options.idle:
             print(f"rounds started on a busy machine (waited a minute): {busy_rounds}")
-        first = seconds[options.binaries[0]]
-        for binary in options.binaries:
-            s = seconds[binary]
+        first = seconds[runs[0][0]]
+        for label, s in seconds.items():
             # The ratio within each round, whose runs are back to back: steadier than the ratio
             # of the medians when the machine's load drifts between rounds.
             ratio = statistics.median(b / a for a, b in zip(first, s))
-            print(f"{binary:<{width}}  median {statistics.median(s):7.3f}  min {min(s):7.3f}  "
+            print(f"{label:<{width}}  median {statistics.median(s):7.3f}  min {min(s):7.3f}  "
                   f"max {max(s):7.3f}  median ratio to the first {ratio:6.3f}")
         return
 
-    values = {b: {f: [] for f in FIELDS} for b in options.binaries}
+    values = {label: {f: [] for f in FIELDS} for label, _, _ in runs}
     for _ in range(options.runs):
         if options.idle and not wait_idle():
             busy_rounds += 1
-        for binary in options.binaries:
-            result = run_once(binary, args)
+        for label, binary, extra in runs:
+            result = run_once(binary, args + extra)
             for field in FIELDS:
                 if field in result:  # builds from before visibility_ms and shade_ms lack them
-                    values[binary][field].append(result[field])
-    width = max(len(b) for b in options.binaries)
+                    values[label][field].append(result[field])
+    width = max(len(label) for label in values)
     print(f"medians of {options.runs} alternated runs of: {' '.join(args)}")
     if options.idle:
         print(f"rounds started on a busy machine (waited a minute): {busy_rounds}")
-    for binary in options.binaries:
-        cells = "  ".join(f"{f} {statistics.median(values[binary][f]):8.3f}" for f in FIELDS
-                          if values[binary][f])
-        print(f"{binary:<{width}}  {cells}")
+    first = values[runs[0][0]]["frame_ms"]
+    for label, v in values.items():
+        cells = "  ".join(f"{f} {statistics.median(v[f]):8.3f}" for f in FIELDS if v[f])
+        if options.variant:
+            # Within each round, as --wall does.
+            cells += f"  first/this {statistics.median(a / b for a, b in zip(first, v['frame_ms'])):6.3f}"
+        print(f"{label:<{width}}  {cells}")
 
 
 if __name__ == "__main__":
