@@ -9,9 +9,9 @@ namespace {
 // Stable counting sort of `in` by row (keyOf(item) in [0, rows)) into `out`. `bucket` holds
 // the number of items of each row r at bucket[r + 1] (bucket[0] = 0), counted as the items were
 // made, and receives the rows + 1 offsets. `moved(i, j)` is told that in[i] went to out[j].
-template <typename T, typename KeyOf, typename Moved>
-void sortByRow(const std::vector<T>& in, int rows, KeyOf keyOf, std::vector<T>& out,
-               std::vector<uint32_t>& bucket, Moved moved) {
+template <typename Vector, typename KeyOf, typename Moved>
+void sortByRow(const Vector& in, int rows, KeyOf keyOf, Vector& out, std::vector<uint32_t>& bucket,
+               Moved moved) {
   for (int r = 0; r < rows; ++r) bucket[size_t(r) + 1] += bucket[size_t(r)];
   out.resize(in.size());
   // bucket[r] serves as the cursor of row r, then is shifted back into place.

@@ -28,7 +28,7 @@ void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& 
 void ScanlineAlgorithm::drawRows(Band& band, int rowEnd, const FrameInput& input, FrameBuffer& fb,
                                  RenderStats& stats) const {
   const PolygonTables& tables = band.tables;
-  std::vector<ActiveEdge>& activeEdges = band.activeEdges;
+  auto& activeEdges = band.activeEdges;
   std::vector<uint32_t>& activeCount = band.activeCount;
   std::vector<uint32_t>& activePolygons = band.activePolygons;
   activeEdges.resize(tables.edges.size());

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "zrender/base/UninitializedAllocator.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/raster/RasterRules.hpp"
 
@@ -77,7 +78,10 @@ struct PartFace {
 
 // Classified polygon table (CPT) and classified edge table (CET) of one frame, bucketed by top
 // row with counting sorts and stored in that order, so that the row loops walk memory forward.
-// Vectors are kept between frames so that building allocates only on growth.
+// Vectors are kept between frames so that building allocates only on growth, and those written
+// in full before they are read grow without being zeroed first (UninitializedAllocator): with
+// several threads, a thread's tables hold another band each time, so they grow again in every
+// frame (docs/performance.md).
 class PolygonTables {
  public:
   // Classifies every face of `g` against an image of width x height samples. Faces that cover
@@ -98,7 +102,7 @@ class PolygonTables {
   std::vector<uint32_t> polygonBucket;  // height + 1 offsets
   // Sorted by first row: the edges that become active on row y are edges[edgeBucket[y],
   // edgeBucket[y + 1]).
-  std::vector<ClassifiedEdge> edges;
+  std::vector<ClassifiedEdge, UninitializedAllocator<ClassifiedEdge>> edges;
   std::vector<uint32_t> edgeBucket;  // height + 1 offsets
   // Number of polygons whose bottom row is y (they leave the active table after row y).
   std::vector<uint32_t> polygonsEnding;
@@ -113,8 +117,8 @@ class PolygonTables {
   int height_ = 0, rowEnd_ = 0;  // of the build under way
   // Classification in face order, before the sorts.
   std::vector<ClassifiedPolygon> unsortedPolygons_;
-  std::vector<ClassifiedEdge> unsortedEdges_;
-  std::vector<uint32_t> newIndex_;
+  std::vector<ClassifiedEdge, UninitializedAllocator<ClassifiedEdge>> unsortedEdges_;
+  std::vector<uint32_t, UninitializedAllocator<uint32_t>> newIndex_;
 };
 
 }  // namespace zrender

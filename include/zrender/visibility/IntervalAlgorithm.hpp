@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "zrender/base/UninitializedAllocator.hpp"
 #include "zrender/raster/PolygonEdges.hpp"
 #include "zrender/visibility/PolygonBands.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
@@ -64,7 +65,8 @@ class IntervalAlgorithm : public VisibilityAlgorithm {
     PolygonTables tables_;
     std::vector<ActiveEdge> activeEdges_;        // the active edge table, sorted by column
     std::vector<ActiveEdge> newEdges_, merged_;  // edges joining on this row; merge scratch
-    std::vector<EdgeStepper> steppers_;          // per classified edge, valid while it is active
+    // Per classified edge, valid while it is active (written when it joins).
+    std::vector<EdgeStepper, UninitializedAllocator<EdgeStepper>> steppers_;
     std::vector<int32_t> inPosition_;    // per polygon: index in inside_, or -1 when outside
     std::vector<uint32_t> inside_;       // polygons covering the current span
     std::vector<Candidate> candidates_;  // scratch for multi-candidate spans

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "zrender/base/UninitializedAllocator.hpp"
 #include "zrender/raster/PolygonEdges.hpp"
 #include "zrender/visibility/PolygonBands.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
@@ -34,8 +35,8 @@ class ScanlineAlgorithm : public VisibilityAlgorithm {
     std::vector<uint32_t> activePolygons;  // indices into tables.polygons
     // Active edges of polygon p live in activeEdges[p.edgeBegin, p.edgeBegin +
     // activeCount[p]): a polygon never has more active edges than edges, so the slots never
-    // overflow.
-    std::vector<ActiveEdge> activeEdges;
+    // overflow. A slot is written when its edge joins, before it is read.
+    std::vector<ActiveEdge, UninitializedAllocator<ActiveEdge>> activeEdges;
     std::vector<uint32_t> activeCount;
   };
   // Draws rows [band.tables.rowBegin, rowEnd) from band.tables.
