@@ -39,6 +39,7 @@ arguments or when a run fails or prints no JSON.
 
 import argparse
 import json
+import shlex
 import statistics
 import subprocess
 import sys
@@ -118,7 +119,7 @@ def main():
     if not args:
         fail("no zrender arguments after --")
     # What runs in each round, in order: a binary with a variant's arguments (label, argv).
-    variants = [(v, v.split()) for v in options.variant] or [("", [])]
+    variants = [(v, shlex.split(v)) for v in options.variant] or [("", [])]
     runs = [(f"{b} {v}".strip(), b, extra) for b in options.binaries for v, extra in variants]
 
     busy_rounds = 0
@@ -161,7 +162,8 @@ def main():
         cells = "  ".join(f"{f} {statistics.median(v[f]):8.3f}" for f in FIELDS if v[f])
         if options.variant:
             # Within each round, as --wall does.
-            cells += f"  first/this {statistics.median(a / b for a, b in zip(first, v['frame_ms'])):6.3f}"
+            ratio = statistics.median(a / b for a, b in zip(first, v["frame_ms"]))
+            cells += f"  first/this {ratio:6.3f}"
         print(f"{label:<{width}}  {cells}")
 
 
