@@ -2,8 +2,10 @@
 
 #include "zrender/base/HeapPages.hpp"
 #include "zrender/cli/CommandLine.hpp"
+#include "zrender/io/InterruptCleanup.hpp"
 
 int main(int argc, char** argv) {
   zrender::useHugePagesForHeap();
+  zrender::removeInFlightFilesOnSignals();
   return zrender::runCommandLine(argc, argv, std::cout, std::cerr);
 }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target of fuzz/ for SECONDS seconds, starting from the seed corpus.
-#   tools/fuzz.sh SECONDS [TARGET...]      TARGET: obj settings render (default: all three)
+#   tools/fuzz.sh SECONDS [TARGET...]      TARGET: obj settings render grid (default: all four)
 # Configures and builds build-fuzz/ with clang (-DZRENDER_FUZZ=ON) when needed. The corpus is
 # copied to a temporary folder, so new corpus entries stay out of the repository. Prints the
 # executions of each target and exits non-zero if any target crashed, hung or broke a contract;
@@ -10,13 +10,13 @@
 # run explores the same inputs each time).
 set -euo pipefail
 
-usage() { echo "usage: $0 SECONDS [obj|settings|render ...]" >&2; exit 2; }
+usage() { echo "usage: $0 SECONDS [obj|settings|render|grid ...]" >&2; exit 2; }
 [[ $# -ge 1 && $1 =~ ^[0-9]+$ && $1 -gt 0 ]] || usage
 seconds=$1
 shift
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(obj settings render)
-for t in "${targets[@]}"; do [[ $t =~ ^(obj|settings|render)$ ]] || usage; done
+[[ ${#targets[@]} -gt 0 ]] || targets=(obj settings render grid)
+for t in "${targets[@]}"; do [[ $t =~ ^(obj|settings|render|grid)$ ]] || usage; done
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${ZRENDER_FUZZ_BUILD:-$root/build-fuzz}

@@ -14,6 +14,7 @@
 #include "zrender/cli/Report.hpp"
 #include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageOutput.hpp"
+#include "zrender/io/OutputFile.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/io/SettingsFile.hpp"
 #include "zrender/render/Renderer.hpp"
@@ -119,33 +120,12 @@ Json::Value rowToJson(const BenchRow& r) {
   return j;
 }
 
-// pathBeside(path, tag), after creating the missing parent folders.
-void writeTextAtomically(const fs::path& path, const std::string& text) {
-  std::error_code ec;
-  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
-  const fs::path tmp = pathBeside(path, "tmp");
-  {
-    std::ofstream out(tmp, std::ios::binary);
-    out << text;
-    if (!out) {
-      fs::remove(tmp, ec);
-      throw InputError(path.string() + ": cannot write file");
-    }
-  }
-  replaceFile(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;  // not ec: its message is the reason given
-    fs::remove(tmp, ignored);
-    throw InputError(path.string() + ": cannot write file: " + ec.message());
-  }
-}
-
 }  // namespace
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
   Warnings warnings;
   auto flushWarnings = [&] {
-    for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
+    for (const auto& w : warnings) err << "zrender: warning: " << messageLine(w) << "\n";
     warnings.clear();
   };
   // The z-buffer is the reference every algorithm is compared with, so it always comes first.
@@ -157,8 +137,12 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   }
   if (options.chart) checkOutputExtension(*options.chart, {".png"}, "chart");
   // A bench can run for minutes: an output that cannot be written fails before it starts.
-  for (const auto& path : {options.markdown, options.json, options.chart})
-    if (path) checkWritable(*path);
+  std::vector<NamedOutput> outputs;
+  if (options.markdown) outputs.push_back({"--markdown", *options.markdown});
+  if (options.json) outputs.push_back({"--json", *options.json});
+  if (options.chart) outputs.push_back({"--chart", *options.chart});
+  checkDistinctOutputs(outputs);
+  for (const NamedOutput& output : outputs) checkWritable(output.path);
 
   std::vector<std::string> scenes = options.scenes;
   if (scenes.empty()) {
@@ -249,7 +233,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
 
   const std::string table = markdownTable(rows, options.repeat, options.threads);
   out << table;
-  if (options.markdown) writeTextAtomically(*options.markdown, table);
+  if (options.markdown) writeFileAtomically(*options.markdown, table);
   if (options.json) {
     Json::Value all(Json::arrayValue);
     for (const BenchRow& r : rows) all.append(rowToJson(r));
@@ -257,7 +241,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     builder["indentation"] = "  ";
     builder["precision"] = 3;
     builder["precisionType"] = "decimal";
-    writeTextAtomically(*options.json, Json::writeString(builder, all) + "\n");
+    writeFileAtomically(*options.json, Json::writeString(builder, all) + "\n");
   }
   if (options.chart) {
     std::vector<ChartGroup> groups;

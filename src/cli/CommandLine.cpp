@@ -22,12 +22,6 @@ namespace {
 // More threads than any machine has: a typo rather than a request.
 constexpr int kMaxThreads = 4096;
 
-std::string oneLine(std::string s) {
-  std::replace(s.begin(), s.end(), '\n', ' ');
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
-
 // "x,y,z" options land in a vector; converted after parsing.
 struct VectorOptions {
   std::vector<double> eye, target, up, axis;
@@ -91,7 +85,7 @@ bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
     out << e.what() << '\n';
     return false;
   } catch (const CLI::ParseError& e) {
-    throw InputError("command line: " + oneLine(e.what()));
+    throw InputError("command line: " + messageLine(e.what()));
   }
   return true;
 }
@@ -192,13 +186,13 @@ int runCommandLine(int argc, char** argv, std::ostream& out, std::ostream& err) 
   try {
     return parseAndRun(argc, argv, out, err);
   } catch (const InputError& e) {
-    err << "zrender: error: " << oneLine(e.what()) << "\n";
+    err << "zrender: error: " << messageLine(e.what()) << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
     err << "zrender: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    err << "zrender: internal error: " << oneLine(e.what()) << "\n";
+    err << "zrender: internal error: " << messageLine(e.what()) << "\n";
     return 1;
   }
 }

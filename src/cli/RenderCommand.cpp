@@ -15,7 +15,9 @@
 #include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageCodecs.hpp"
 #include "zrender/io/ImageOutput.hpp"
+#include "zrender/io/OutputFile.hpp"
 #include "zrender/io/SceneFiles.hpp"
+#include "zrender/io/VideoContainer.hpp"
 #include "zrender/render/FrameMemory.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
@@ -107,7 +109,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   const double start = nowMs();
   Warnings warnings;
   auto flushWarnings = [&] {
-    for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
+    for (const auto& w : warnings) err << "zrender: warning: " << messageLine(w) << "\n";
     warnings.clear();
   };
 
@@ -137,6 +139,19 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   if (options.depth)
     checkOutputExtension(*options.depth, {".tif", ".tiff", ".exr", ".png"}, "depth");
   if (options.ids) checkOutputExtension(*options.ids, {".png"}, "id image");
+  {
+    std::vector<NamedOutput> outputs;
+    if (turntable && !isVideo(colorPath)) {
+      for (int frame = 0; frame < options.turntable; ++frame)
+        outputs.push_back({"-o", framePath(colorPath.string(), frame)});
+    } else {
+      outputs.push_back({"-o", colorPath});
+    }
+    if (options.depth) outputs.push_back({"--depth", *options.depth});
+    if (options.ids) outputs.push_back({"--ids", *options.ids});
+    if (options.contactSheet) outputs.push_back({"--contact-sheet", *options.contactSheet});
+    checkDistinctOutputs(outputs);
+  }
 
   const double loadStart = nowMs();
   // A turntable with at least as many frames as threads renders whole frames at once, each on
@@ -171,23 +186,19 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   const Camera baseCamera = makeCamera(scene);
   const bool tty = isatty(STDERR_FILENO);
 
-  // Video frames go to a temporary file renamed at the end: complete or not at all.
+  // Video frames go to an OutputFile renamed over the target at the end, once the container
+  // is known to be finished: complete or not at all.
+  std::unique_ptr<OutputFile> videoFile;
   std::unique_ptr<VideoFile> video;
-  fs::path videoTmp;
-  struct RemoveOnExit {  // the temporary video, unless it was renamed into place
-    fs::path& path;
-    ~RemoveOnExit() {
-      std::error_code ec;
-      if (!path.empty()) fs::remove(path, ec);
-    }
-  } removeTmp{videoTmp};
   if (turntable && isVideo(colorPath)) {
-    std::error_code ec;
-    if (!colorPath.parent_path().empty()) fs::create_directories(colorPath.parent_path(), ec);
-    videoTmp = pathBeside(colorPath, "tmp");
-    video = std::make_unique<VideoFile>(videoTmp, settings.width, settings.height, 30.0);
-    if (!video->isOpen())
-      throw InputError(colorPath.string() + ": cannot open a video writer for this format");
+    videoFile = std::make_unique<OutputFile>(colorPath);
+    video = std::make_unique<VideoFile>(videoFile->pathForLibrary(), settings.width,
+                                        settings.height, 30.0);
+    if (!video->isOpen()) {
+      const std::string full = videoFile->diskFullNote();
+      videoFile->fail(full.empty() ? "cannot open a video writer for this format"
+                                   : "cannot write file: the video writer could not start" + full);
+    }
   }
   std::vector<Image> sheetFrames(options.contactSheet ? size_t(frames) : 0);
 
@@ -278,10 +289,10 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
 
   if (video) {
     video->close();
-    std::error_code ec;
-    replaceFile(videoTmp, colorPath, ec);
-    if (ec) throw InputError(colorPath.string() + ": cannot write file: " + ec.message());
-    videoTmp.clear();
+    const std::string problem = videoContainerProblem(videoFile->pathForLibrary());
+    if (!problem.empty())
+      videoFile->fail("cannot write file: " + problem + videoFile->diskFullNote());
+    videoFile->commit();
   }
   if (options.contactSheet)
     writeImageAtomically(*options.contactSheet, contactSheet(sheetFrames), &threads);

@@ -65,6 +65,9 @@ void applyOverrides(const SceneOverrides& o, SceneSettings& s) {
 
 namespace {
 
+// How many scene names an "unknown scene" error lists.
+constexpr size_t kScenesNamed = 20;
+
 // Which of the given options feed each key's rule in validateScene: eye is checked against
 // target, up against the viewing direction target - eye.
 KeyOrigins keyOrigins(const SceneOverrides& o) {
@@ -110,7 +113,12 @@ SceneSettings resolveScene(const std::string& scene, const std::optional<fs::pat
       where = settingsPath.string() + ": scene '" + scene + "'";
       found = true;
     }
-    for (const auto& entry : file.scenes) known += (known.empty() ? "" : ", ") + entry.first;
+    // The first few names: a file may hold any number.
+    size_t listed = 0;
+    for (const auto& entry : file.scenes) {
+      if (listed++ < kScenesNamed) known += (known.empty() ? "" : ", ") + entry.first;
+    }
+    if (listed > kScenesNamed) known += " and " + std::to_string(listed - kScenesNamed) + " more";
   }
   if (!found) {
     if (fs::is_regular_file(scene, ec)) {

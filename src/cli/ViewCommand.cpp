@@ -6,6 +6,7 @@
 #include "zrender/base/Error.hpp"
 #include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageOutput.hpp"
+#include "zrender/io/OutputFile.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/view/ViewWindow.hpp"
 #include "zrender/view/Viewer.hpp"
@@ -15,7 +16,7 @@ namespace zrender {
 int runView(const ViewOptions& options, std::ostream& out, std::ostream& err) {
   Warnings warnings;
   auto flushWarnings = [&] {
-    for (const auto& w : warnings) err << "zrender: warning: " << w << "\n";
+    for (const auto& w : warnings) err << "zrender: warning: " << messageLine(w) << "\n";
     warnings.clear();
   };
   // Outputs are checked before the window opens, so a typo costs nothing and writes nothing.
@@ -41,8 +42,11 @@ int runView(const ViewOptions& options, std::ostream& out, std::ostream& err) {
   }
   const SceneSettings settings = resolveScene(options.scene, options.settings, overrides, warnings);
   flushWarnings();
-  for (const auto& path : {options.saveLast, options.contactSheet})
-    if (path) checkWritable(*path);
+  std::vector<NamedOutput> outputs;
+  if (options.saveLast) outputs.push_back({"--save-last", *options.saveLast});
+  if (options.contactSheet) outputs.push_back({"--contact-sheet", *options.contactSheet});
+  checkDistinctOutputs(outputs);
+  for (const NamedOutput& output : outputs) checkWritable(output.path);
 
   // Before the model loads: without a display the error comes at once.
   const std::unique_ptr<ViewWindow> window =

@@ -6,6 +6,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
+#include <string>
 
 #include "zrender/base/Error.hpp"
 
@@ -23,12 +25,19 @@ struct Descriptor {
 
 }  // namespace
 
-FileText::FileText(const std::string& path) {
+FileText::FileText(const std::string& path, size_t maxBytes) {
+  const auto tooLarge = [&] {
+    return InputError(path + ": file too large (over " + std::to_string(maxBytes >> 20) + " MiB)");
+  };
   const Descriptor in{::open(path.c_str(), O_RDONLY | O_CLOEXEC)};
   if (in.fd < 0) throw InputError(path + ": cannot open file");
   struct stat status {};
   if (::fstat(in.fd, &status) != 0) throw InputError(path + ": cannot read file");
   if (S_ISDIR(status.st_mode)) throw InputError(path + ": cannot open file (it is a folder)");
+  if (S_ISCHR(status.st_mode) || S_ISBLK(status.st_mode))
+    throw InputError(path + ": cannot read a device as a file");
+  if (S_ISREG(status.st_mode) && uint64_t(status.st_size) > maxBytes) throw tooLarge();
+  // A regular file is mapped at the size it has now: what is appended later is not read.
   if (S_ISREG(status.st_mode) && status.st_size > 0) {
     size_ = static_cast<size_t>(status.st_size);
     void* map = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, in.fd, 0);
@@ -45,6 +54,7 @@ FileText::FileText(const std::string& path) {
     if (n == 0) break;
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) throw InputError(path + ": cannot read file");
+    if (read_.size() + size_t(n) > maxBytes) throw tooLarge();
     read_.append(buffer, static_cast<size_t>(n));
   }
 }

@@ -1,6 +1,8 @@
 #include "zrender/io/ImageCodecs.hpp"
 
 #include <png.h>
+#include <stdlib.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cctype>
@@ -34,7 +36,7 @@ namespace {
 
 // The plugin's entry points, resolved once on first use and never changed afterwards.
 struct CodecPlugin {
-  ZrenderImwriteFn imwrite = nullptr;
+  ZrenderImencodeFn imencode = nullptr;
   ZrenderImreadFn imread = nullptr;
   ZrenderVideoOpenFn videoOpen = nullptr;
   ZrenderVideoWriteFn videoWrite = nullptr;
@@ -43,6 +45,9 @@ struct CodecPlugin {
 
 const CodecPlugin& codecPlugin() {
   static const CodecPlugin plugin = [] {
+    // OpenCV reads its limit on an image's pixels when it is loaded; it checks each file's
+    // header against it before allocating (docs/design.md, Limits).
+    ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(kMaxImagePixels).c_str(), 1);
     std::string reason;
     void* handle = openPlugin("libzrender_codecs.so", ZRENDER_CODECS_PLUGIN, reason);
     if (!handle)
@@ -50,37 +55,16 @@ const CodecPlugin& codecPlugin() {
                                reason);
     const auto symbol = [handle](const char* name) { return pluginSymbol(handle, name); };
     CodecPlugin p;
-    p.imwrite = reinterpret_cast<ZrenderImwriteFn>(symbol("zrenderImwrite"));
+    p.imencode = reinterpret_cast<ZrenderImencodeFn>(symbol("zrenderImencode"));
     p.imread = reinterpret_cast<ZrenderImreadFn>(symbol("zrenderImread"));
     p.videoOpen = reinterpret_cast<ZrenderVideoOpenFn>(symbol("zrenderVideoOpen"));
     p.videoWrite = reinterpret_cast<ZrenderVideoWriteFn>(symbol("zrenderVideoWrite"));
     p.videoClose = reinterpret_cast<ZrenderVideoCloseFn>(symbol("zrenderVideoClose"));
-    if (!p.imwrite || !p.imread || !p.videoOpen || !p.videoWrite || !p.videoClose)
+    if (!p.imencode || !p.imread || !p.videoOpen || !p.videoWrite || !p.videoClose)
       throw std::runtime_error("the image codec plugin libzrender_codecs.so is incomplete");
     return p;
   }();
   return plugin;
-}
-
-bool writePng(const fs::path& path, const Image& image, const Threads& threads,
-              std::string& error) {
-  if (!pngCanHold(image)) {
-    error = image.empty() ? "PNG cannot hold an empty image" : "PNG cannot hold this image type";
-    return false;
-  }
-  FILE* file = std::fopen(path.c_str(), "wb");
-  if (!file) {
-    error = "cannot write file";
-    return false;
-  }
-  std::string reason;
-  const bool ok = encodePng(file, image, threads, reason);
-  const bool closed = std::fclose(file) == 0;
-  if (!ok || !closed) {
-    error = "cannot write file" + (reason.empty() ? std::string() : ": " + reason);
-    return false;
-  }
-  return true;
 }
 
 Image readPng(const fs::path& path, std::string& error) {
@@ -93,6 +77,12 @@ Image readPng(const fs::path& path, std::string& error) {
   };
   if (!png_image_begin_read_from_file(&png, path.c_str())) return failed();
   const size_t width = png.width, height = png.height;
+  if (uint64_t(width) * height > kMaxImagePixels) {
+    error = "is too large (" + std::to_string(width) + " x " + std::to_string(height) +
+            " pixels, over " + std::to_string(kMaxImagePixels) + ")";
+    png_image_free(&png);
+    return Image();
+  }
   Image bgr(int(height), int(width), PixelFormat::kBgr8);
   if (!(png.format & PNG_FORMAT_FLAG_ALPHA)) {  // no alpha (nor tRNS): read as it is kept
     png.format = PNG_FORMAT_BGR;
@@ -113,25 +103,20 @@ Image readPng(const fs::path& path, std::string& error) {
   return bgr;
 }
 
-bool isPng(const fs::path& path) {
-  return lowerExtension(path) == ".png";
-}
-
 }  // namespace
 
-bool encodeImageFile(const fs::path& path, const Image& image, std::string& error,
-                     const Threads* threads) {
-  if (isPng(path)) {
-    const Threads one;
-    return writePng(path, image, threads ? *threads : one, error);
-  }
+bool encodeImage(const std::string& extension, const Image& image,
+                 std::vector<unsigned char>& bytes, std::string& error) {
   char message[512] = "";
-  if (codecPlugin().imwrite(path.c_str(), &image, message, sizeof message) == 0) return true;
+  if (codecPlugin().imencode(extension.c_str(), &image, &bytes, message, sizeof message) == 0)
+    return true;
   error = message;
   return false;
 }
 
-Image decodeColorImage(const fs::path& path, std::string& error) {
+namespace {
+
+Image decodeOrThrow(const fs::path& path, std::string& error) {
   // PNG files are recognised by their signature, whatever their name.
   unsigned char signature[8] = {};
   std::error_code ec;
@@ -142,6 +127,12 @@ Image decodeColorImage(const fs::path& path, std::string& error) {
   FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) {  // said here: OpenCV would print a warning of its own on stderr
     error = std::string("cannot be opened: ") + std::strerror(errno);
+    return {};
+  }
+  struct stat status {};
+  if (::fstat(fileno(f), &status) != 0 || !S_ISREG(status.st_mode)) {
+    std::fclose(f);
+    error = "cannot be read (not a regular file)";  // a device or a pipe never ends
     return {};
   }
   const size_t n = std::fread(signature, 1, sizeof signature, f);
@@ -155,6 +146,19 @@ Image decodeColorImage(const fs::path& path, std::string& error) {
     return {};
   }
   return out;
+}
+
+}  // namespace
+
+Image decodeColorImage(const fs::path& path, std::string& error) {
+  try {
+    return decodeOrThrow(path, error);
+  } catch (const std::bad_alloc&) {
+    error = "cannot be read: out of memory";
+  } catch (const std::exception& e) {  // the codec plugin cannot be loaded
+    error = std::string("cannot be read: ") + e.what();
+  }
+  return {};
 }
 
 VideoFile::VideoFile(const fs::path& path, int width, int height, double fps) {

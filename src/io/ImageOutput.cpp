@@ -1,21 +1,18 @@
 #include "zrender/io/ImageOutput.hpp"
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cstdio>
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <string>
-#include <system_error>
+#include <vector>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/base/Threads.hpp"
 #include "zrender/io/ImageCodecs.hpp"
+#include "zrender/io/OutputFile.hpp"
+#include "zrender/io/PngWriter.hpp"
 
 namespace zrender {
 
@@ -27,13 +24,6 @@ DepthKey pixelKey(const FrameBuffer& fb, int scale, int x, int y) {
   const DepthKey* r0 = fb.row(2 * y);
   const DepthKey* r1 = fb.row(2 * y + 1);
   return std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]});
-}
-
-// The missing folders above `path`, or InputError naming it.
-void createParentFolders(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!path.parent_path().empty()) std::filesystem::create_directories(path.parent_path(), ec);
-  if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
 }
 
 }  // namespace
@@ -56,62 +46,23 @@ void checkOutputExtension(const std::filesystem::path& path,
                    ")");
 }
 
-std::filesystem::path pathBeside(const std::filesystem::path& target, const char* tag) {
-  return target.parent_path() / ("." + target.stem().string() + "." + tag + "-" +
-                                 std::to_string(::getpid()) + target.extension().string());
-}
-
-void checkWritable(const std::filesystem::path& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  createParentFolders(path);
-  if (fs::is_directory(path, ec))
-    throw InputError(path.string() + ": cannot write file (a folder has that name)");
-  const fs::path probe = pathBeside(path, "probe");
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError(path.string() + ": cannot write file: " + std::strerror(errno));
-  ::close(fd);
-  fs::remove(probe, ec);
-}
-
-void replaceFile(const std::filesystem::path& from, const std::filesystem::path& to,
-                 std::error_code& ec) {
-  const auto isFile = [](const std::filesystem::path& path) {
-    struct stat status {};
-    return ::lstat(path.c_str(), &status) == 0 && S_ISREG(status.st_mode);
-  };
-  if (isFile(to) &&
-      ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE) == 0) {
-    if (isFile(from)) {  // the old file, now under the temporary name
-      std::filesystem::remove(from, ec);
-      ec.clear();  // the new one is in place whatever became of the old
-      return;
-    }
-    // Something else took the target's place since it was looked at: put it back.
-    ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_EXCHANGE);
-  }
-  // No file there, or not a regular one (a rename over a folder fails as it should), or a file
-  // system that cannot exchange.
-  std::filesystem::rename(from, to, ec);
-}
-
 void writeImageAtomically(const std::filesystem::path& path, const Image& image,
                           const Threads* threads) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  createParentFolders(path);
-  const fs::path tmp = pathBeside(path, "tmp");
+  OutputFile file(path);
   std::string reason;
-  if (!encodeImageFile(tmp, image, reason, threads)) {
-    fs::remove(tmp, ec);
-    throw InputError(path.string() + ": " + reason);
+  if (lowerExtension(path) == ".png") {
+    if (!pngCanHold(image))
+      file.fail(image.empty() ? "PNG cannot hold an empty image"
+                              : "PNG cannot hold this image type");
+    const Threads one;
+    if (!encodePng(file.stream(), image, threads ? *threads : one, reason))
+      file.fail("cannot write file: " + reason);
+  } else {
+    std::vector<unsigned char> bytes;
+    if (!encodeImage(lowerExtension(path), image, bytes, reason)) file.fail(reason);
+    file.write(bytes.data(), bytes.size());
   }
-  replaceFile(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;  // not ec: its message is the reason given
-    fs::remove(tmp, ignored);
-    throw InputError(path.string() + ": cannot replace file: " + ec.message());
-  }
+  file.commit();
 }
 
 Image depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {

@@ -6,8 +6,12 @@
 #include "zrender/base/SideBySide.hpp"
 #include "zrender/io/ImageCodecs.hpp"
 #include "zrender/io/ObjLoader.hpp"
+#include "zrender/raster/RasterRules.hpp"
 
 namespace zrender {
+
+// A scene's face ids stop below the background's.
+static_assert(kMaxSceneFaces == kBackgroundId);
 
 Image loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings) {
   std::string texturePath;

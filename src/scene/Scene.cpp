@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "zrender/base/Error.hpp"
 
 namespace zrender {
 
@@ -29,6 +32,16 @@ std::vector<Vec3> gridOffsets(const SceneSettings& s) {
 }  // namespace
 
 Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, Image texture) {
+  // Face ids count across instances (docs/design.md, Faces, ids and shading): checked in 64
+  // bits before any id is made.
+  const uint64_t instances = settings.grid ? uint64_t(settings.grid->instanceCount()) : 1;
+  const uint64_t faces = uint64_t(mesh->faceCount()) * instances;
+  if (faces > kMaxSceneFaces) {
+    throw InputError("scene '" + settings.name + "': " + std::to_string(mesh->faceCount()) +
+                     " faces x " + std::to_string(instances) +
+                     " instances = " + std::to_string(faces) + " faces, over the " +
+                     std::to_string(kMaxSceneFaces) + " face ids a frame can tell apart");
+  }
   Scene scene;
   scene.settings = settings;
   scene.mesh = std::move(mesh);

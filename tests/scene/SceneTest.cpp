@@ -6,8 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "support/TestSupport.hpp"
+#include "zrender/base/Error.hpp"
 #include "zrender/scene/Scene.hpp"
 #include "zrender/scene/Transforms.hpp"
 
@@ -52,6 +56,35 @@ TEST(Scene, TheBoundingSphereReachesTheFarthestVertexOfAnyInstance) {
       }
     }
     EXPECT_EQ(scene.boundsRadius, std::sqrt(farthest)) << "seed " << seed;
+  }
+}
+
+}  // namespace
+}  // namespace zrender
+
+namespace zrender {
+namespace {
+
+// A mesh of `faces` triangles (all the same one): its face count is what counts here.
+std::shared_ptr<const Mesh> manyFaces(int faces) {
+  return test::makeMesh({{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}},
+                        std::vector<std::vector<int>>(size_t(faces), {0, 1, 2}));
+}
+
+TEST(Scene, FaceIdsMustFitBelowTheBackgroundsId) {
+  // 65537 x 65535 = 2^32 - 1 faces: ids 0 .. 2^32 - 2, the background's 2^32 - 1 left free.
+  SceneSettings s = test::tinySettings(8);
+  s.grid = Grid{{65535, 1, 1}, {1.0, 1.0, 1.0}};
+  const Scene fits = makeScene(s, manyFaces(65537));
+  EXPECT_EQ(uint64_t(fits.faceCount()), kMaxSceneFaces);
+  try {
+    makeScene(s, manyFaces(65538));
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "scene '" + s.name +
+                  "': 65538 faces x 65535 instances = 4295032830 faces, over the 4294967295 "
+                  "face ids a frame can tell apart");
   }
 }
 

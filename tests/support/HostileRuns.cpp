@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -18,6 +19,34 @@ Outcome runLimited(const std::vector<std::string>& args, const std::string& dir,
   limits.alarmSeconds = unsigned(timeoutSeconds * kSlowdown) + 1;
   limits.fileSizeLimit = fileSizeLimit;
   return runZrender(args, dir, limits);
+}
+
+std::optional<Outcome> runOnSmallDisk(const std::vector<std::string>& args, const TempDir& dir,
+                                      const std::string& small, size_t bytes, std::string& why) {
+  // Exit 97: the file system could not be made, before zrender ran.
+  const char* script = R"(d=$1; size=$2; shift 2
+    cp -a "$d/." "$d.seed/" && mount -t tmpfs -o "size=$size" none "$d" && cp -a "$d.seed/." "$d/" || exit 97
+    "$@"; rc=$?
+    cp -a "$d/." "$d.after/" || exit 97
+    exit $rc)";
+  const std::string folder = dir.file(small);
+  fs::create_directories(folder + ".seed");
+  fs::create_directories(folder + ".after");
+  std::vector<std::string> argv = {
+      "unshare", "-Urm", "sh", "-c", script, "sh", folder, std::to_string(bytes), ZRENDER_BINARY};
+  argv.insert(argv.end(), args.begin(), args.end());
+  RunLimits limits;
+  limits.alarmSeconds = unsigned(60 * kSlowdown);
+  const Outcome r = runProgram(argv, dir.path, limits);
+  fs::remove_all(folder + ".seed");
+  if (r.status == 97 || (r.status == 1 && r.err.rfind("unshare:", 0) == 0)) {
+    why = "cannot make a small file system here: " + r.err;
+    fs::remove_all(folder + ".after");
+    return std::nullopt;
+  }
+  fs::remove_all(folder);
+  fs::rename(folder + ".after", folder);
+  return r;
 }
 
 void expectQuickCleanError(const Outcome& r, const std::vector<std::string>& mustName,

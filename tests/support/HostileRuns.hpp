@@ -5,6 +5,7 @@
 // "zrender: error: ..." naming the file and line or key; never crash, hang or take more than a
 // few seconds.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,13 @@ using Outcome = RunResult;
 // optionally a file size limit so that writing the output fails part way.
 Outcome runLimited(const std::vector<std::string>& args, const std::string& dir,
                    double timeoutSeconds = 60, unsigned long fileSizeLimit = 0);
+
+// Runs zrender with `args` in `dir`, where the folder `dir`/`small` is a file system of `bytes`
+// bytes (a tmpfs in a mount namespace of the run's own, through unshare(1)) that starts with
+// what `small` held; afterwards `small` holds what the run left in it. nullopt when this machine
+// cannot make one (no unshare, or no user namespaces), with the reason in `why`.
+std::optional<Outcome> runOnSmallDisk(const std::vector<std::string>& args, const TempDir& dir,
+                                      const std::string& small, size_t bytes, std::string& why);
 
 // Exit 2, one stderr line starting "zrender: error: " that contains every piece of `mustName`,
 // in a few seconds.

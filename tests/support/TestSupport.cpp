@@ -13,6 +13,7 @@
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <thread>
 
 #include "zrender/io/ObjLoader.hpp"
 
@@ -125,7 +126,18 @@ RunResult runProgram(const std::vector<std::string>& args, const std::string& di
     _exit(127);
   }
   int status = 0;
-  waitpid(pid, &status, 0);
+  if (limits.signal) {
+    const auto due = start + std::chrono::duration<double>(limits.signalAfterSeconds);
+    bool ended = false;
+    while (!ended && std::chrono::steady_clock::now() < due) {
+      ended = waitpid(pid, &status, WNOHANG) == pid;
+      if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    if (!ended) kill(pid, limits.signal);
+    if (!ended) waitpid(pid, &status, 0);
+  } else {
+    waitpid(pid, &status, 0);
+  }
   RunResult r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.status = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,6 +15,14 @@ class InputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// The most bytes of one message line that zrender prints (an error or a warning, after its
+// "zrender: error: " prefix): a message can carry a path or a list of any length.
+inline constexpr size_t kMaxMessageBytes = 1000;
+
+// `text` as one printed line: line breaks become spaces, trailing spaces go, and past
+// kMaxMessageBytes the middle is cut to " ... ": the start names the file, the end says why.
+std::string messageLine(std::string text);
 
 // Non-fatal problems (an unknown settings key, a missing texture) collected while loading; the
 // command line prints each as "zrender: warning: <text>".

@@ -10,9 +10,11 @@ class Image;
 }
 
 extern "C" {
-// 0 on success; otherwise a message is written into `error` (at most `size` bytes).
-typedef int (*ZrenderImwriteFn)(const char* path, const zrender::Image* image, char* error,
-                                size_t size);
+// Encodes `image` in the format of `extension` (".jpg") into `out`, a
+// std::vector<unsigned char>; 0 on success, otherwise a message is written into `error` (at
+// most `size` bytes).
+typedef int (*ZrenderImencodeFn)(const char* extension, const zrender::Image* image, void* out,
+                                 char* error, size_t size);
 // Fills `out` with cv::imread(path, IMREAD_COLOR), 8-bit BGR; 0 on success.
 typedef int (*ZrenderImreadFn)(const char* path, zrender::Image* out, char* error, size_t size);
 typedef void* (*ZrenderVideoOpenFn)(const char* path, int fourcc, double fps, int width,

@@ -6,6 +6,9 @@
 
 namespace zrender {
 
+// The largest model file zrender reads, bytes (docs/design.md, Limits).
+inline constexpr size_t kMaxModelBytes = size_t(2) << 30;
+
 // The bytes of a file, read once for a parse. A regular file is mapped, not copied: its pages
 // come straight from the kernel's cache (for the bunny's 2.4 MB, 0.3 ms mapped against 1.9 ms
 // read into new memory). Anything else (a pipe) is read. If another program truncates a
@@ -13,8 +16,9 @@ namespace zrender {
 // it, which a mapping does not see (docs/design.md, Loading).
 class FileText {
  public:
-  // Throws InputError "PATH: cannot open file" (or "... (it is a folder)", "cannot read file").
-  explicit FileText(const std::string& path);
+  // Throws InputError "PATH: cannot open file" (or "... (it is a folder)", "cannot read file",
+  // "cannot read a device as a file", "file too large (over N MiB)" past `maxBytes`).
+  explicit FileText(const std::string& path, size_t maxBytes = kMaxModelBytes);
   ~FileText();
   FileText(const FileText&) = delete;
   FileText& operator=(const FileText&) = delete;

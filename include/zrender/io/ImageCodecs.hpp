@@ -7,9 +7,11 @@
 // whose loading alone costs more CPU per process than the whole render of the bunny
 // (docs/performance.md).
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "zrender/base/Image.hpp"
 
@@ -20,13 +22,18 @@ class Threads;
 // The extension of `path` in lower case (".png" for "X.PNG"); formats are chosen by it.
 std::string lowerExtension(const std::filesystem::path& path);
 
-// Encodes `image` (8-bit gray or BGR, 16-bit gray, or float for .tif/.exr) into `path`, the
-// format chosen by the extension; a PNG is deflated by `threads` when there are several (null:
-// one). Returns false and sets `error` on failure.
-bool encodeImageFile(const std::filesystem::path& path, const Image& image, std::string& error,
-                     const Threads* threads = nullptr);
+// Encodes `image` (8-bit gray or BGR, 16-bit gray, or float for .tif/.exr) in memory in the
+// format of `extension` (".jpg", ".tif", ...; PNG is PngWriter's). Returns false and sets
+// `error` on failure.
+bool encodeImage(const std::string& extension, const Image& image,
+                 std::vector<unsigned char>& bytes, std::string& error);
 
-// Decodes an image file into 8-bit BGR. Returns an empty image and sets `error` on failure.
+// The most pixels an image read (a texture) may have: 16384 x 8192, 384 MiB as 8-bit BGR. The
+// size in a file's header is checked against it before any pixel is allocated.
+inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 27;
+
+// Decodes an image file into 8-bit BGR. Returns an empty image and sets `error` (what follows
+// the file's name: "is too large (...)", "cannot be opened: ...") on failure.
 Image decodeColorImage(const std::filesystem::path& path, std::string& error);
 
 // A video file being written (.mp4: MPEG-4 part 2, .avi: Motion JPEG), 8-bit BGR frames.

@@ -17,27 +17,9 @@ void checkOutputExtension(const std::filesystem::path& path,
 // The extensions -o accepts.
 std::initializer_list<const char*> colorExtensions();
 
-// The hidden file ".STEM.TAG-PID.EXT" in the folder of `target`, for writing an output
-// completely before renaming it into place: the same folder, so the rename is atomic; the
-// same extension, so a codec chosen from it is the target's.
-std::filesystem::path pathBeside(const std::filesystem::path& target, const char* tag);
-
-// Moves the file `from` to `to` in one step (the same file system), replacing what is there,
-// as std::filesystem::rename does; `ec` as its. A regular file at `to` is exchanged with
-// `from` (RENAME_EXCHANGE) and then removed, rather than renamed over: ext4 starts writing the
-// new file to disk inside a rename over an existing one (auto_da_alloc), 0.7 ms for a PNG of
-// 760 KB on this machine (docs/design.md, Outputs).
-void replaceFile(const std::filesystem::path& from, const std::filesystem::path& to,
-                 std::error_code& ec);
-
-// Fails now (InputError) if `path` could not be written later, so that a run that would fail
-// at its end writes nothing: creates the missing parent folders (the write would), refuses a
-// folder in the target's place, and creates a probe file beside the target, removed at once.
-void checkWritable(const std::filesystem::path& path);
-
-// Writes an image completely or not at all: encodes to a temporary file beside the target,
-// then renames it over the target; missing parent folders are created. InputError on failure.
-// A PNG is encoded by `threads` when there are several (null: one thread).
+// Writes an image completely or not at all, as an OutputFile (io/OutputFile.hpp); missing
+// parent folders are created. InputError on failure. A PNG is encoded by `threads` when there
+// are several (null: one thread); the other formats are encoded in memory, then written.
 void writeImageAtomically(const std::filesystem::path& path, const Image& image,
                           const Threads* threads = nullptr);
 

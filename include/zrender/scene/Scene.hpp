@@ -10,6 +10,11 @@
 
 namespace zrender {
 
+// The most faces a scene may have, all instances counted: face ids run from 0 to
+// kMaxSceneFaces - 1 in the 32 bits of a key, and the id 0xFFFFFFFF is the background's
+// (raster/RasterRules.hpp).
+inline constexpr uint64_t kMaxSceneFaces = 0xFFFFFFFFu;
+
 // Everything that depends on the model and the settings but not on the frame: the mesh, its
 // grid instances and the diffuse texture. Built once, shared by all frames and algorithms.
 struct Scene {
@@ -28,8 +33,8 @@ struct Scene {
   Mat4 modelMatrix(uint32_t instance) const;
 };
 
-// Builds the instances and bounds; `texture` (8-bit BGR, or empty) is the scene's diffuse
-// texture, as io's loadTexture() reads it.
+// Builds the instances and bounds (InputError when the scene has more than kMaxSceneFaces);
+// `texture` (8-bit BGR, or empty) is the scene's diffuse texture, as io's loadTexture() reads it.
 Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
                 Image texture = Image());
 
