@@ -4,7 +4,8 @@
 # /work/main inside it with ../shared bind-mounted read-only beside it, and runs, as root:
 #   tools/setup.sh && build/zrender bunny        then   tools/test.sh
 # and then both once more, to show they are safe to run twice. Needs root, network access to
-# deb.debian.org and about 2 GB of disk; takes a few minutes. Not part of CI (CI itself starts
+# the Debian mirror this machine's apt uses (read from its sources, which the new system gets
+# too) and about 2 GB of disk; takes a few minutes. Not part of CI (CI itself starts
 # from a clean checkout and lets tools/test.sh install what is missing).
 #   tools/fresh-debian.sh [FOLDER]      default /tmp/zrender-fresh-debian (removed first)
 set -euo pipefail
@@ -22,12 +23,33 @@ cleanup() {
 }
 trap cleanup EXIT
 rm -rf "$dest"
-debootstrap --variant=minbase bookworm "$dest" http://deb.debian.org/debian >/dev/null
-cat >"$dest/etc/apt/sources.list" <<'EOF'
-deb http://deb.debian.org/debian bookworm main
-deb http://deb.debian.org/debian bookworm-updates main
-deb http://deb.debian.org/debian-security bookworm-security main
-EOF
+# The mirror this machine's apt takes bookworm from: a one-line "deb [options] URI bookworm ..."
+# or a deb822 stanza whose Suites hold bookworm.
+mirror=$(
+  { cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list 2>/dev/null || true; } |
+    awk '$1 == "deb" { i = 2; if ($i ~ /^\[/) { while (i <= NF && $i !~ /\]$/) i++; i++ }
+                       if ($(i + 1) == "bookworm") { print $i; exit } }'
+)
+if [ -z "$mirror" ]; then
+  mirror=$(
+    { cat /etc/apt/sources.list.d/*.sources 2>/dev/null || true; echo; } |
+      awk '/^[ \t]*$/ { if (uris != "" && suites ~ / bookworm( |$)/) { print uris; exit }
+                        uris = ""; suites = "" }
+           /^URIs:/ { uris = $2 }
+           /^Suites:/ { $1 = ""; suites = $0 " " }'
+  )
+fi
+[ -n "$mirror" ] || { echo "fresh-debian: error: no bookworm source in /etc/apt" >&2; exit 2; }
+echo "fresh-debian: mirror $mirror (from this machine's apt sources)"
+debootstrap --variant=minbase bookworm "$dest" "$mirror" >/dev/null
+# The new system's sources are this machine's Debian ones (the files naming a bookworm suite);
+# other vendors' need keys the new system does not have.
+rm -f "$dest/etc/apt/sources.list"
+for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources; do
+  if [ -f "$f" ] && grep -Eq '(^|[[:space:]])bookworm(-updates|-security)?([[:space:]]|$)' "$f"; then
+    cp "$f" "$dest/etc/apt/${f#/etc/apt/}"
+  fi
+done
 cp /etc/resolv.conf "$dest/etc/resolv.conf"
 mkdir -p "$dest/work/shared"
 mount -t proc proc "$dest/proc" && mounts+=("$dest/proc")
