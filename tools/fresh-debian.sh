@@ -23,33 +23,11 @@ cleanup() {
 }
 trap cleanup EXIT
 rm -rf "$dest"
-# The mirror this machine's apt takes bookworm from: a one-line "deb [options] URI bookworm ..."
-# or a deb822 stanza whose Suites hold bookworm.
-mirror=$(
-  { cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list 2>/dev/null || true; } |
-    awk '$1 == "deb" { i = 2; if ($i ~ /^\[/) { while (i <= NF && $i !~ /\]$/) i++; i++ }
-                       if ($(i + 1) == "bookworm") { print $i; exit } }'
-)
-if [ -z "$mirror" ]; then
-  mirror=$(
-    { cat /etc/apt/sources.list.d/*.sources 2>/dev/null || true; echo; } |
-      awk '/^[ \t]*$/ { if (uris != "" && suites ~ / bookworm( |$)/) { print uris; exit }
-                        uris = ""; suites = "" }
-           /^URIs:/ { uris = $2 }
-           /^Suites:/ { $1 = ""; suites = $0 " " }'
-  )
-fi
+mirror=$("$root/tools/debian-mirror.sh")
 [ -n "$mirror" ] || { echo "fresh-debian: error: no bookworm source in /etc/apt" >&2; exit 2; }
 echo "fresh-debian: mirror $mirror (from this machine's apt sources)"
 debootstrap --variant=minbase bookworm "$dest" "$mirror" >/dev/null
-# The new system's sources are this machine's Debian ones (the files naming a bookworm suite);
-# other vendors' need keys the new system does not have.
-rm -f "$dest/etc/apt/sources.list"
-for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list /etc/apt/sources.list.d/*.sources; do
-  if [ -f "$f" ] && grep -Eq '(^|[[:space:]])bookworm(-updates|-security)?([[:space:]]|$)' "$f"; then
-    cp "$f" "$dest/etc/apt/${f#/etc/apt/}"
-  fi
-done
+"$root/tools/debian-mirror.sh" --copy-sources "$dest"
 cp /etc/resolv.conf "$dest/etc/resolv.conf"
 mkdir -p "$dest/work/shared"
 mount -t proc proc "$dest/proc" && mounts+=("$dest/proc")

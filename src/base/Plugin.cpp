@@ -9,17 +9,20 @@ namespace zrender {
 
 namespace fs = std::filesystem;
 
-void* openPlugin(const std::string& fileName, const std::string& builtPath, std::string& error) {
-  std::vector<std::string> candidates;
+void* openPlugin(const std::string& fileName, std::string& error) {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    candidates.push_back((exe.parent_path() / fileName).string());
-    candidates.push_back((exe.parent_path().parent_path() / fileName).string());
+  if (ec) {
+    error = "cannot find the executable's folder: " + ec.message();
+    return nullptr;
   }
-  candidates.push_back(builtPath);
-  error = "not found beside the executable nor at " + builtPath;
-  for (const std::string& c : candidates) {
+  const fs::path folder = exe.parent_path();
+  // Installed (P/bin/zrender, P/lib/zrender/), then the build tree (build/zrender, and
+  // build/tests/zrender_tests or build-fuzz/fuzz/fuzz_render one folder down).
+  const std::vector<fs::path> candidates = {folder.parent_path() / "lib" / "zrender" / fileName,
+                                            folder / fileName, folder.parent_path() / fileName};
+  error = "not found in " + candidates[0].parent_path().string() + " nor beside " + exe.string();
+  for (const fs::path& c : candidates) {
     if (!fs::exists(c, ec)) continue;
     if (void* handle = dlopen(c.c_str(), RTLD_NOW | RTLD_LOCAL)) return handle;
     error = dlerror();

@@ -10,6 +10,7 @@
 #include "zrender/base/Threads.hpp"
 #include "zrender/cli/BenchCommand.hpp"
 #include "zrender/cli/RenderCommand.hpp"
+#include "zrender/cli/SceneResolution.hpp"
 #include "zrender/cli/ViewCommand.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
@@ -33,7 +34,14 @@ void addVector(CLI::App& app, const char* name, std::vector<double>& v, const ch
 
 void addSceneOptions(CLI::App& app, SceneOverrides& o, VectorOptions& v,
                      std::optional<fs::path>& settings) {
-  app.add_option("--settings", settings, "settings file (default: ./settings.json)");
+  // The fallback, when there is one, is named: a user who did not name a settings file can
+  // find the one that is read.
+  const fs::path fallback = defaultSettingsPath();
+  app.add_option("--settings", settings,
+                 "settings file (default: ./settings.json" +
+                     (fallback.empty() || fallback == "settings.json"
+                          ? std::string(")")
+                          : ", else " + fallback.string() + ", of the build tree)"));
   app.add_option("--width", o.width, "image width in pixels, 1..16384");
   app.add_option("--height", o.height, "image height in pixels, 1..16384");
   addVector(app, "--eye", v.eye, "camera position");

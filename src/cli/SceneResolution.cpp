@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "zrender/base/Error.hpp"
 #include "zrender/io/SceneValidation.hpp"
@@ -22,13 +23,18 @@ SceneSettings defaultSceneForModel(const fs::path& modelPath) {
 fs::path defaultSettingsPath() {
   std::error_code ec;
   if (fs::is_regular_file("settings.json", ec)) return "settings.json";
-  // The project the executable was built from: build/zrender -> ./settings.json beside build/.
+  // A zrender run from its build tree (CMakeCache.txt beside it, or one folder up for the
+  // tests) falls back to its source tree's settings.json; an installed one never does.
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    for (fs::path dir = exe.parent_path(); !dir.empty() && dir != dir.root_path();
-         dir = dir.parent_path()) {
-      if (fs::is_regular_file(dir / "settings.json", ec) && fs::is_directory(dir / "src", ec))
-        return dir / "settings.json";
+  if (ec) return {};
+  for (const fs::path& folder : {exe.parent_path(), exe.parent_path().parent_path()}) {
+    std::ifstream cache(folder / "CMakeCache.txt");
+    std::string line;
+    const std::string key = "CMAKE_HOME_DIRECTORY:INTERNAL=";
+    while (std::getline(cache, line)) {
+      if (line.rfind(key, 0) != 0) continue;
+      const fs::path settings = fs::path(line.substr(key.size())) / "settings.json";
+      return fs::is_regular_file(settings, ec) ? settings : fs::path();
     }
   }
   return {};

@@ -5,11 +5,6 @@
 #include "zrender/base/Plugin.hpp"
 #include "zrender/io/DrawingPlugin.h"
 
-// Where the build put the plugin; the directory of the executable is searched first.
-#ifndef ZRENDER_DRAWING_PLUGIN
-#define ZRENDER_DRAWING_PLUGIN "libzrender_drawing.so"
-#endif
-
 namespace zrender {
 
 namespace {
@@ -25,7 +20,7 @@ struct DrawingPlugin {
 const DrawingPlugin& drawingPlugin() {
   static const DrawingPlugin plugin = [] {
     std::string reason;
-    void* handle = openPlugin("libzrender_drawing.so", ZRENDER_DRAWING_PLUGIN, reason);
+    void* handle = openPlugin("libzrender_drawing.so", reason);
     if (!handle)
       throw std::runtime_error("cannot load the drawing plugin libzrender_drawing.so: " + reason);
     const auto symbol = [handle](const char* name) { return pluginSymbol(handle, name); };

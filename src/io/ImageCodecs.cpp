@@ -16,11 +16,6 @@
 #include "zrender/io/CodecPlugin.h"
 #include "zrender/io/PngWriter.hpp"
 
-// Where the build put the plugin; the directory of the executable is searched first.
-#ifndef ZRENDER_CODECS_PLUGIN
-#define ZRENDER_CODECS_PLUGIN "libzrender_codecs.so"
-#endif
-
 namespace zrender {
 
 namespace fs = std::filesystem;
@@ -49,7 +44,7 @@ const CodecPlugin& codecPlugin() {
     // header against it before allocating (docs/design.md, Limits).
     ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(kMaxImagePixels).c_str(), 1);
     std::string reason;
-    void* handle = openPlugin("libzrender_codecs.so", ZRENDER_CODECS_PLUGIN, reason);
+    void* handle = openPlugin("libzrender_codecs.so", reason);
     if (!handle)
       throw std::runtime_error("cannot load the image codec plugin libzrender_codecs.so: " +
                                reason);

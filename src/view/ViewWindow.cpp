@@ -6,11 +6,6 @@
 #include "zrender/base/Plugin.hpp"
 #include "zrender/view/WindowPlugin.h"
 
-// Where the build put the plugin; the folder of the executable is searched first.
-#ifndef ZRENDER_WINDOW_PLUGIN
-#define ZRENDER_WINDOW_PLUGIN "libzrender_window.so"
-#endif
-
 namespace zrender {
 
 namespace {
@@ -49,7 +44,7 @@ std::unique_ptr<ViewWindow> openViewWindow(const std::string& title, const char*
                      "no display: DISPLAY is not set (run it on a desktop, or under Xvfb: "
                      "xvfb-run zrender view ...)");
   std::string reason;
-  void* plugin = openPlugin("libzrender_window.so", ZRENDER_WINDOW_PLUGIN, reason);
+  void* plugin = openPlugin("libzrender_window.so", reason);
   if (!plugin)
     throw InputError(prefix + "no GUI backend: cannot load libzrender_window.so: " + reason);
   WindowPlugin p;

@@ -11,10 +11,11 @@
 
 namespace zrender {
 
-// Opens the plugin `fileName` (e.g. "libzrender_codecs.so"): beside the executable first
-// (build/zrender, build/libzrender_codecs.so), then in its parent folder, then at `builtPath`,
-// where the build put it. Returns the dlopen handle, or null with the reason in `error`.
-void* openPlugin(const std::string& fileName, const std::string& builtPath, std::string& error);
+// Opens the plugin `fileName` (e.g. "libzrender_codecs.so"), found relative to the executable
+// only: in ../lib/zrender/ (an installed zrender: P/bin/zrender, P/lib/zrender/), then beside
+// it and in its parent folder (the build tree). Returns the dlopen handle, or null with the
+// reason in `error`.
+void* openPlugin(const std::string& fileName, std::string& error);
 
 // The address of `symbol` in a plugin opened by openPlugin, or null.
 void* pluginSymbol(void* plugin, const char* symbol);

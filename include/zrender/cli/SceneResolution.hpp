@@ -31,8 +31,10 @@ SceneSettings resolveScene(const std::string& scene,
                            const std::optional<std::filesystem::path>& settingsOption,
                            const SceneOverrides& overrides, Warnings& warnings);
 
-// The settings file used when --settings is absent: ./settings.json, else the one of the
-// project the executable was built from. Empty when neither exists.
+// The settings file used when --settings is absent: ./settings.json, else, for an executable in
+// its build tree (CMakeCache.txt beside it or one folder up), the source tree's. Empty when
+// neither exists: an installed zrender reads only the files it is given or finds in the
+// current folder.
 std::filesystem::path defaultSettingsPath();
 
 // Applies the overrides to a scene; throws InputError for an unknown shading name.
