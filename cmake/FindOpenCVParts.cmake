@@ -13,7 +13,8 @@ include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(OpenCVParts REQUIRED_VARS OpenCVParts_INCLUDE_DIR ${_zr_required})
 # OpenCV::Headers: the headers alone, for the program's own code, which uses OpenCV's small
 # vector and matrix types (cv::Vec, cv::Matx: templates, all in the headers) and links none of
-# its libraries. OpenCV::Core: core and imgproc, for the drawing plugin. OpenCV::Codecs:
+# its libraries. OpenCV::Core: core and imgproc, linked by the program (cv::Mat is its image
+# type; it draws with imgproc). OpenCV::Codecs:
 # imgcodecs and videoio, whose Debian builds pull in some 200 shared libraries; only the codec
 # plugin and the tests link them.
 if(OpenCVParts_FOUND AND NOT TARGET OpenCV::Core)

@@ -105,8 +105,8 @@ inline std::string describeDifference(const FrameBuffer& a, const FrameBuffer& b
   return "color only";
 }
 
-inline bool sameImage(const Image& a, const Image& b) {
-  return a.samePixels(b);
+inline bool sameImage(const cv::Mat& a, const cv::Mat& b) {
+  return samePixels(a, b);
 }
 
 // Renders the scene with every algorithm of algorithmNames() and compares each one's buffer
@@ -119,7 +119,7 @@ inline std::string checkAlgorithmsAgree(const Scene& scene, bool twice) {
     renderer->renderFrame(camera);
     if (twice) {
       const FrameBuffer first = renderer->buffer();
-      const Image firstColor = renderer->color().clone();
+      const cv::Mat firstColor = renderer->color().clone();
       renderer->renderFrame(camera);
       if (!(renderer->buffer() == first) || !sameImage(renderer->color(), firstColor)) {
         return name + ": the second frame differs from the first (" +

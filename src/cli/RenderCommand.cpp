@@ -200,7 +200,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
                                    : "cannot write file: the video writer could not start" + full);
     }
   }
-  std::vector<Image> sheetFrames(options.contactSheet ? size_t(frames) : 0);
+  std::vector<cv::Mat> sheetFrames(options.contactSheet ? size_t(frames) : 0);
 
   // Renders a frame and writes its own files: on any thread, several frames at once.
   const auto render = [&](size_t frame, size_t slot) {

@@ -1,74 +1,151 @@
 #include "zrender/io/Drawing.hpp"
 
-#include <stdexcept>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
 
-#include "zrender/base/Plugin.hpp"
-#include "zrender/io/DrawingPlugin.h"
+#include <opencv2/imgproc.hpp>
 
 namespace zrender {
 
 namespace {
 
-// The plugin's entry points, resolved once on first use and never changed afterwards.
-struct DrawingPlugin {
-  ZrenderDrawBarChartFn drawBarChart = nullptr;
-  ZrenderOverlayBoxFn overlayBox = nullptr;
-  ZrenderWithOverlayFn withOverlay = nullptr;
-  ZrenderContactSheetFn contactSheet = nullptr;
-};
-
-const DrawingPlugin& drawingPlugin() {
-  static const DrawingPlugin plugin = [] {
-    std::string reason;
-    void* handle = openPlugin("libzrender_drawing.so", reason);
-    if (!handle)
-      throw std::runtime_error("cannot load the drawing plugin libzrender_drawing.so: " + reason);
-    const auto symbol = [handle](const char* name) { return pluginSymbol(handle, name); };
-    DrawingPlugin p;
-    p.drawBarChart = reinterpret_cast<ZrenderDrawBarChartFn>(symbol("zrenderDrawBarChart"));
-    p.overlayBox = reinterpret_cast<ZrenderOverlayBoxFn>(symbol("zrenderOverlayBox"));
-    p.withOverlay = reinterpret_cast<ZrenderWithOverlayFn>(symbol("zrenderWithOverlay"));
-    p.contactSheet = reinterpret_cast<ZrenderContactSheetFn>(symbol("zrenderContactSheet"));
-    if (!p.drawBarChart || !p.overlayBox || !p.withOverlay || !p.contactSheet)
-      throw std::runtime_error("the drawing plugin libzrender_drawing.so is incomplete");
-    return p;
-  }();
-  return plugin;
+cv::Mat barChart(const std::string& title, const std::vector<ChartGroup>& groups) {
+  // Layout in pixels.
+  const int barWidth = 70, barGap = 18, groupGap = 60, margin = 40;
+  const int plotHeight = 320, top = 90, labelSpace = 70;
+  int width = margin;
+  for (const auto& g : groups)
+    width += int(g.bars.size()) * (barWidth + barGap) - barGap + groupGap;
+  width = std::max(width - groupGap + margin, 480);
+  const int height = top + plotHeight + labelSpace + 20;
+  cv::Mat image(height, width, CV_8UC3, cv::Scalar(255, 255, 255));
+  const int font = cv::FONT_HERSHEY_SIMPLEX;
+  cv::putText(image, title, cv::Point(margin, 36), font, 0.8, cv::Scalar(30, 30, 30), 2,
+              cv::LINE_AA);
+  // A fixed color per bar position (BGR), so an algorithm keeps its color across groups.
+  const cv::Scalar palette[] = {{180, 119, 31}, {14, 127, 255},  {44, 160, 44},
+                                {40, 39, 214},  {189, 103, 148}, {75, 86, 140}};
+  const int baseline = top + plotHeight;
+  int x = margin;
+  for (const auto& g : groups) {
+    double largest = 0.0;
+    for (const auto& b : g.bars) largest = std::max(largest, b.value);
+    const int groupStart = x;
+    for (size_t i = 0; i < g.bars.size(); ++i) {
+      const ChartBar& b = g.bars[i];
+      const int h = largest > 0 ? int(plotHeight * b.value / largest + 0.5) : 0;
+      const cv::Scalar color = palette[i % (sizeof palette / sizeof palette[0])];
+      cv::rectangle(image, cv::Rect(x, baseline - h, barWidth, std::max(h, 1)), color, cv::FILLED);
+      char text[32];
+      if (b.part > 0.0 && largest > 0) {
+        const int p = int(plotHeight * std::min(b.part, b.value) / largest + 0.5);
+        cv::rectangle(image, cv::Rect(x, baseline - p, barWidth, std::max(p, 1)), color * 0.55,
+                      cv::FILLED);
+        std::snprintf(text, sizeof text, b.part < 10 ? "%.2f" : "%.1f", b.part);
+        if (p >= 18)
+          cv::putText(image, text, cv::Point(x + 2, baseline - p + 14), font, 0.42,
+                      cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+      }
+      std::snprintf(text, sizeof text, b.value < 10 ? "%.2f" : "%.1f", b.value);
+      cv::putText(image, text, cv::Point(x + 2, baseline - h - 8), font, 0.45,
+                  cv::Scalar(30, 30, 30), 1, cv::LINE_AA);
+      cv::putText(image, b.label, cv::Point(x, baseline + 20), font, 0.42, cv::Scalar(30, 30, 30),
+                  1, cv::LINE_AA);
+      x += barWidth + barGap;
+    }
+    cv::putText(image, g.caption, cv::Point(groupStart, baseline + 50), font, 0.55,
+                cv::Scalar(0, 0, 0), 1, cv::LINE_AA);
+    x += groupGap - barGap;
+  }
+  cv::line(image, cv::Point(margin - 10, baseline), cv::Point(width - margin + 10, baseline),
+           cv::Scalar(0, 0, 0), 1);
+  return image;
 }
 
-// Throws the plugin's message when `status` is not 0.
-void check(int status, const char* error) {
-  if (status != 0) throw std::runtime_error(std::string("drawing: ") + error);
+constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
+constexpr int kMargin = 6;  // pixels between the overlay box's edge and the text
+
+// The overlay text's layout, pixels: its scale, the tallest letter above and below the
+// baseline, the height of a line and the width of the longest.
+struct Layout {
+  double scale;
+  int ascent, descent, lineHeight, width;
+};
+
+Layout layout(const cv::Size& size, const std::vector<std::string>& lines) {
+  // About 0.5 on a 600-pixel frame, then smaller until the longest line fits.
+  double scale = std::clamp(0.5 * std::min(size.width, size.height) / 600.0, 0.3, 0.8);
+  for (;;) {
+    int width = 0, ascent = 0, descent = 0;
+    for (const std::string& line : lines) {
+      int baseline = 0;
+      const cv::Size text = cv::getTextSize(line, kFont, scale, 1, &baseline);
+      width = std::max(width, text.width);
+      ascent = std::max(ascent, text.height);
+      descent = std::max(descent, baseline);
+    }
+    if (width + 3 * kMargin <= size.width || scale <= 0.2)
+      return {scale, ascent, descent, ascent + descent + kMargin / 2, width};
+    scale *= 0.9;
+  }
+}
+
+cv::Rect boxOf(const cv::Size& size, const std::vector<std::string>& lines) {
+  const Layout l = layout(size, lines);
+  const cv::Rect box(kMargin / 2, kMargin / 2, l.width + 2 * kMargin,
+                     l.lineHeight * int(lines.size()) + kMargin);  // kMargin / 2 above and below
+  return box & cv::Rect(0, 0, size.width, size.height);
+}
+
+cv::Mat overlaid(const cv::Mat& frame, const std::vector<std::string>& lines) {
+  cv::Mat shown = frame.clone();
+  const Layout l = layout(frame.size(), lines);
+  const cv::Rect box = boxOf(frame.size(), lines);
+  if (box.empty()) return shown;
+  cv::Mat area = shown(box);
+  area.convertTo(area, -1, 0.35);  // darkened, so white text reads on any model
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const cv::Point origin(box.x + kMargin, box.y + kMargin / 2 + l.lineHeight * int(i) + l.ascent);
+    cv::putText(shown, lines[i], origin, kFont, l.scale, cv::Scalar(255, 255, 255), 1, cv::LINE_AA);
+  }
+  return shown;
+}
+
+cv::Mat sheetOf(const std::vector<cv::Mat>& frames) {
+  const int n = int(frames.size());
+  const int columns = int(std::ceil(std::sqrt(double(n))));
+  const int rows = (n + columns - 1) / columns;
+  const int cellWidth = std::min(frames[0].cols, 1800 / columns);
+  const int cellHeight = std::max(1, frames[0].rows * cellWidth / frames[0].cols);
+  cv::Mat sheet(rows * cellHeight, columns * cellWidth, CV_8UC3, cv::Scalar(0, 0, 0));
+  for (int i = 0; i < n; ++i) {
+    cv::Mat cell = sheet(
+        cv::Rect((i % columns) * cellWidth, (i / columns) * cellHeight, cellWidth, cellHeight));
+    cv::resize(frames[size_t(i)], cell, cell.size(), 0, 0, cv::INTER_AREA);
+  }
+  return sheet;
 }
 
 }  // namespace
 
-Image drawBarChart(const std::string& title, const std::vector<ChartGroup>& groups) {
-  Image out;
-  char error[512] = "";
-  check(drawingPlugin().drawBarChart(&title, &groups, &out, error, sizeof error), error);
-  return out;
+cv::Mat drawBarChart(const std::string& title, const std::vector<ChartGroup>& groups) {
+  return barChart(title, groups);
 }
 
 PixelBox overlayBox(int width, int height, const std::vector<std::string>& lines) {
-  PixelBox out;
-  char error[512] = "";
-  check(drawingPlugin().overlayBox(width, height, &lines, &out, error, sizeof error), error);
-  return out;
+  const cv::Rect box = boxOf(cv::Size(width, height), lines);
+  return PixelBox{box.x, box.y, box.width, box.height};
 }
 
-Image withOverlay(const Image& frame, const std::vector<std::string>& lines) {
-  Image out;
-  char error[512] = "";
-  check(drawingPlugin().withOverlay(&frame, &lines, &out, error, sizeof error), error);
-  return out;
+cv::Mat withOverlay(const cv::Mat& frame, const std::vector<std::string>& lines) {
+  return overlaid(frame, lines);
 }
 
-Image contactSheet(const std::vector<Image>& frames) {
-  Image out;
-  char error[512] = "";
-  check(drawingPlugin().contactSheet(&frames, &out, error, sizeof error), error);
-  return out;
+cv::Mat contactSheet(const std::vector<cv::Mat>& frames) {
+  return sheetOf(frames);
 }
 
 }  // namespace zrender

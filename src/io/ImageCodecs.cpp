@@ -62,13 +62,13 @@ const CodecPlugin& codecPlugin() {
   return plugin;
 }
 
-Image readPng(const fs::path& path, std::string& error) {
+cv::Mat readPng(const fs::path& path, std::string& error) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   const auto failed = [&] {
     error = std::string("cannot be read as an image: ") + png.message;
     png_image_free(&png);
-    return Image();
+    return cv::Mat();
   };
   if (!png_image_begin_read_from_file(&png, path.c_str())) return failed();
   const size_t width = png.width, height = png.height;
@@ -76,12 +76,12 @@ Image readPng(const fs::path& path, std::string& error) {
     error = "is too large (" + std::to_string(width) + " x " + std::to_string(height) +
             " pixels, over " + std::to_string(kMaxImagePixels) + ")";
     png_image_free(&png);
-    return Image();
+    return cv::Mat();
   }
-  Image bgr(int(height), int(width), PixelFormat::kBgr8);
+  cv::Mat bgr(int(height), int(width), CV_8UC3);
   if (!(png.format & PNG_FORMAT_FLAG_ALPHA)) {  // no alpha (nor tRNS): read as it is kept
     png.format = PNG_FORMAT_BGR;
-    if (!png_image_finish_read(&png, nullptr, bgr.data(), png_int_32(bgr.step()), nullptr))
+    if (!png_image_finish_read(&png, nullptr, bgr.data, png_int_32(bgr.step), nullptr))
       return failed();
     return bgr;
   }
@@ -92,7 +92,7 @@ Image readPng(const fs::path& path, std::string& error) {
     return failed();
   for (size_t y = 0; y < height; ++y) {
     const uint8_t* in = bgra.data() + y * width * 4;
-    uint8_t* out = bgr.row(int(y));
+    uint8_t* out = bgr.ptr(int(y));
     for (size_t x = 0; x < width; ++x) std::memcpy(out + 3 * x, in + 4 * x, 3);
   }
   return bgr;
@@ -100,7 +100,7 @@ Image readPng(const fs::path& path, std::string& error) {
 
 }  // namespace
 
-bool encodeImage(const std::string& extension, const Image& image,
+bool encodeImage(const std::string& extension, const cv::Mat& image,
                  std::vector<unsigned char>& bytes, std::string& error) {
   char message[512] = "";
   if (codecPlugin().imencode(extension.c_str(), &image, &bytes, message, sizeof message) == 0)
@@ -111,7 +111,7 @@ bool encodeImage(const std::string& extension, const Image& image,
 
 namespace {
 
-Image decodeOrThrow(const fs::path& path, std::string& error) {
+cv::Mat decodeOrThrow(const fs::path& path, std::string& error) {
   // PNG files are recognised by their signature, whatever their name.
   unsigned char signature[8] = {};
   std::error_code ec;
@@ -134,7 +134,7 @@ Image decodeOrThrow(const fs::path& path, std::string& error) {
   std::fclose(f);
   if (n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0)
     return readPng(path, error);
-  Image out;
+  cv::Mat out;
   char message[512] = "";
   if (codecPlugin().imread(path.c_str(), &out, message, sizeof message)) {
     error = message;
@@ -145,7 +145,7 @@ Image decodeOrThrow(const fs::path& path, std::string& error) {
 
 }  // namespace
 
-Image decodeColorImage(const fs::path& path, std::string& error) {
+cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
   try {
     return decodeOrThrow(path, error);
   } catch (const std::bad_alloc&) {
@@ -170,7 +170,7 @@ VideoFile::~VideoFile() {
   close();
 }
 
-void VideoFile::write(const Image& frame) {
+void VideoFile::write(const cv::Mat& frame) {
   if (handle_) codecPlugin().videoWrite(handle_, &frame);
 }
 

@@ -46,7 +46,7 @@ void checkOutputExtension(const std::filesystem::path& path,
                    ")");
 }
 
-void writeImageAtomically(const std::filesystem::path& path, const Image& image,
+void writeImageAtomically(const std::filesystem::path& path, const cv::Mat& image,
                           const Threads* threads) {
   OutputFile file(path);
   std::string reason;
@@ -65,26 +65,26 @@ void writeImageAtomically(const std::filesystem::path& path, const Image& image,
   file.commit();
 }
 
-Image depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
+cv::Mat depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
   const int width = fb.width() / scale, height = fb.height() / scale;
-  Image out(height, width, sixteenBit ? PixelFormat::kGray16 : PixelFormat::kFloat32);
+  cv::Mat out(height, width, sixteenBit ? CV_16UC1 : CV_32FC1);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const float d = keyDepth(pixelKey(fb, scale, x, y));
       if (sixteenBit)
-        out.row<uint16_t>(y)[x] = uint16_t(std::lround(double(d) * 65535.0));
+        out.ptr<uint16_t>(y)[x] = uint16_t(std::lround(double(d) * 65535.0));
       else
-        out.row<float>(y)[x] = d;
+        out.ptr<float>(y)[x] = d;
     }
   }
   return out;
 }
 
-Image idImage(const FrameBuffer& fb, int scale) {
+cv::Mat idImage(const FrameBuffer& fb, int scale) {
   const int width = fb.width() / scale, height = fb.height() / scale;
-  Image out(height, width, PixelFormat::kBgr8);
+  cv::Mat out(height, width, CV_8UC3);
   for (int y = 0; y < height; ++y) {
-    uint8_t* p = out.row(y);
+    uint8_t* p = out.ptr(y);
     for (int x = 0; x < width; ++x) {
       const uint32_t v = keyFaceId(pixelKey(fb, scale, x, y)) + 1;  // background wraps to 0
       p[3 * x + 2] = uint8_t(v);                                    // R: low byte

@@ -34,19 +34,19 @@ void putBigEndian32(unsigned char* p, uint32_t v) {
 }
 
 // Bytes of one row as PNG stores it, filter byte excluded.
-size_t sampleBytes(const Image& image) {
-  return size_t(image.cols()) * image.pixelBytes();
+size_t sampleBytes(const cv::Mat& image) {
+  return size_t(image.cols) * image.elemSize();
 }
 
 // One row as PNG stores it: the filter byte, then RGB for BGR, big-endian for 16-bit.
-void filterRow(const Image& image, int y, BgrToRgb toRgb, unsigned char* out) {
+void filterRow(const cv::Mat& image, int y, BgrToRgb toRgb, unsigned char* out) {
   out[0] = kFilterNone;
   unsigned char* samples = out + 1;
-  const unsigned char* in = image.row(y);
+  const unsigned char* in = image.ptr(y);
   const size_t n = sampleBytes(image);
-  if (image.format() == PixelFormat::kBgr8) {
-    toRgb(in, samples, size_t(image.cols()));
-  } else if (image.format() == PixelFormat::kGray16) {
+  if (image.type() == CV_8UC3) {
+    toRgb(in, samples, size_t(image.cols));
+  } else if (image.type() == CV_16UC1) {
     for (size_t i = 0; i < n; i += 2) samples[i] = in[i + 1], samples[i + 1] = in[i];
   } else {
     std::memcpy(samples, in, n);
@@ -71,7 +71,7 @@ struct Strip {
 // Rows [first, end) filtered and deflated by igzip at level 1 as raw deflate (no header),
 // ending on a byte boundary (a sync flush), or, for the last strip, with the stream's last
 // block.
-Strip deflateStrip(const Image& image, int first, int end, bool last, Scratch& scratch) {
+Strip deflateStrip(const cv::Mat& image, int first, int end, bool last, Scratch& scratch) {
   Strip strip;
   const size_t rowBytes = 1 + sampleBytes(image);
   const size_t n = rowBytes * size_t(end - first);
@@ -178,24 +178,22 @@ bool writeIdat(std::FILE* file, const std::vector<Piece>& pieces) {
 
 }  // namespace
 
-bool pngCanHold(const Image& image) {
-  const PixelFormat f = image.format();
-  return !image.empty() &&
-         (f == PixelFormat::kBgr8 || f == PixelFormat::kGray8 || f == PixelFormat::kGray16);
+bool pngCanHold(const cv::Mat& image) {
+  const int f = image.type();
+  return !image.empty() && (f == CV_8UC3 || f == CV_8UC1 || f == CV_16UC1);
 }
 
-bool encodePng(std::FILE* file, const Image& image, const Threads& threads, std::string& error,
+bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, std::string& error,
                size_t stripBytes) {
   const size_t rowBytes = 1 + sampleBytes(image);
-  const int rowsPerStrip = int(std::clamp<size_t>(stripBytes / rowBytes, 1, size_t(image.rows())));
-  const size_t stripCount =
-      (size_t(image.rows()) + size_t(rowsPerStrip) - 1) / size_t(rowsPerStrip);
+  const int rowsPerStrip = int(std::clamp<size_t>(stripBytes / rowBytes, 1, size_t(image.rows)));
+  const size_t stripCount = (size_t(image.rows) + size_t(rowsPerStrip) - 1) / size_t(rowsPerStrip);
 
-  const bool gray = image.format() != PixelFormat::kBgr8;
+  const bool gray = image.type() != CV_8UC3;
   unsigned char header[13];
-  putBigEndian32(header, uint32_t(image.cols()));
-  putBigEndian32(header + 4, uint32_t(image.rows()));
-  header[8] = uint8_t(image.format() == PixelFormat::kGray16 ? 16 : 8);  // bits per sample
+  putBigEndian32(header, uint32_t(image.cols));
+  putBigEndian32(header + 4, uint32_t(image.rows));
+  header[8] = uint8_t(image.type() == CV_16UC1 ? 16 : 8);  // bits per sample
   header[9] = uint8_t(gray ? kColorGray : kColorRgb);
   header[10] = header[11] = header[12] = 0;  // deflate, adaptive filtering, no interlace
   const auto failed = [&] {
@@ -220,7 +218,7 @@ bool encodePng(std::FILE* file, const Image& image, const Threads& threads, std:
         threads, stripCount, slots,
         [&](size_t i, size_t slot) {
           const int first = int(i) * rowsPerStrip;
-          strips[slot] = deflateStrip(image, first, std::min(first + rowsPerStrip, image.rows()),
+          strips[slot] = deflateStrip(image, first, std::min(first + rowsPerStrip, image.rows),
                                       i + 1 == stripCount, scratch[slot]);
         },
         [&](size_t i, size_t slot) {

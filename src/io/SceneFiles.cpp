@@ -13,7 +13,7 @@ namespace zrender {
 // A scene's face ids stop below the background's.
 static_assert(kMaxSceneFaces == kBackgroundId);
 
-Image loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings) {
+cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings) {
   std::string texturePath;
   if (settings.texture) {
     texturePath = settings.texture->string();
@@ -25,9 +25,9 @@ Image loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& war
       }
     }
   }
-  if (texturePath.empty()) return Image();
+  if (texturePath.empty()) return cv::Mat();
   std::string error;
-  Image texture = decodeColorImage(texturePath, error);
+  cv::Mat texture = decodeColorImage(texturePath, error);
   // The scene's own `texture` key is a value the user chose: bad input. A material's map_Kd
   // comes with a model from elsewhere, whose textures often go missing: drawn without.
   if (texture.empty() && settings.texture)
@@ -39,7 +39,7 @@ Image loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& war
 
 Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads* threads) {
   std::shared_ptr<const Mesh> mesh;
-  Image texture;
+  cv::Mat texture;
   if (settings.texture) {
     // Warnings in the order of loading one after the other: the model's, then the texture's.
     Warnings textureWarnings;

@@ -5,11 +5,11 @@
 namespace zrender {
 
 bool ColorImage::resize(int width, int height) {
-  if (image_.cols() == width && image_.rows() == height && !image_.empty()) return false;
+  if (image_.cols == width && image_.rows == height && !image_.empty()) return false;
   // New bytes rather than grown ones: nothing to copy.
   decltype(bytes_) fresh(size_t(std::max(width, 0)) * size_t(std::max(height, 0)) * 3);
   bytes_.swap(fresh);
-  image_ = Image(height, width, PixelFormat::kBgr8, bytes_.data(), size_t(std::max(width, 0)) * 3);
+  image_ = cv::Mat(height, width, CV_8UC3, bytes_.data(), size_t(std::max(width, 0)) * 3);
   return true;
 }
 
@@ -47,10 +47,10 @@ void FrameMemory::touchPart(size_t part) {
     end = keys + bytes * (part + 1) / keyParts_;
   } else {
     part -= keyParts_;
-    const Image& image = color.image();
-    const size_t bytes = size_t(image.rows()) * image.step();
-    first = image.data() + bytes * part / colorParts_;
-    end = image.data() + bytes * (part + 1) / colorParts_;
+    const cv::Mat& image = color.image();
+    const size_t bytes = size_t(image.rows) * image.step;
+    first = image.data + bytes * part / colorParts_;
+    end = image.data + bytes * (part + 1) / colorParts_;
   }
   constexpr size_t kPage = 4096;  // bytes; huge pages are faulted by their first write
   for (unsigned char* p = first; p < end; p += kPage) *static_cast<volatile unsigned char*>(p) = 0;

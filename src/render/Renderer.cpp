@@ -1,12 +1,22 @@
 #include "zrender/render/Renderer.hpp"
 
+#include <cstring>
+
 #include "zrender/transform/FaceTransformer.hpp"
 
 namespace zrender {
 
-bool identicalFrames(const FrameBuffer& a, const Image& colorA, const FrameBuffer& b,
-                     const Image& colorB) {
-  return a == b && colorA.samePixels(colorB);
+bool samePixels(const cv::Mat& a, const cv::Mat& b) {
+  if (a.size() != b.size() || a.type() != b.type()) return false;
+  const size_t bytes = size_t(a.cols) * a.elemSize();
+  for (int y = 0; y < a.rows; ++y)
+    if (std::memcmp(a.ptr(y), b.ptr(y), bytes) != 0) return false;
+  return true;
+}
+
+bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuffer& b,
+                     const cv::Mat& colorB) {
+  return a == b && samePixels(colorA, colorB);
 }
 
 Renderer::Renderer(const Scene& scene, const std::string& algorithm, int threads)

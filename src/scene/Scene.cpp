@@ -31,7 +31,7 @@ std::vector<Vec3> gridOffsets(const SceneSettings& s) {
 
 }  // namespace
 
-Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, Image texture) {
+Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, cv::Mat texture) {
   // Face ids count across instances (docs/design.md, Faces, ids and shading): checked in 64
   // bits before any id is made.
   const uint64_t instances = settings.grid ? uint64_t(settings.grid->instanceCount()) : 1;

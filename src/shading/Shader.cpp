@@ -13,14 +13,14 @@ namespace {
 // Writes the pixels of rows [firstRow, endRow) of `color` (8-bit BGR, the size of `fb`) as
 // colorOf(key) (0x00RRGGBB).
 template <typename ColorOf>
-void shadeRows(const FrameBuffer& fb, int firstRow, int endRow, uint32_t background, Image& color,
+void shadeRows(const FrameBuffer& fb, int firstRow, int endRow, uint32_t background, cv::Mat& color,
                ColorOf colorOf) {
   const int width = fb.width();
   const uint32_t backgroundWords[3] = {background | background << 24,
                                        background >> 8 | background << 16,
                                        background >> 16 | background << 8};
   for (int y = firstRow; y < endRow; ++y) {
-    uint8_t* out = color.row(y);
+    uint8_t* out = color.ptr(y);
     const DepthKey* row = fb.row(y);
     // Four pixels (12 bytes: B, G, R each) as three separate 4-byte stores, then the rest one
     // by one. Measured: 4-byte stores beat one 8-byte and one 4-byte store by 3x here. Four
@@ -51,7 +51,7 @@ void shadeRows(const FrameBuffer& fb, int firstRow, int endRow, uint32_t backgro
 // face's pixels along a row: a face usually covers a few pixels in a row.
 template <typename ColorOfFace>
 void shadeFaceRuns(const FrameBuffer& fb, int firstRow, int endRow, uint32_t background,
-                   Image& color, ColorOfFace colorOfFace) {
+                   cv::Mat& color, ColorOfFace colorOfFace) {
   uint32_t lastId = kBackgroundId, lastColor = background;
   shadeRows(fb, firstRow, endRow, background, color, [&](DepthKey key) {
     const uint32_t id = keyFaceId(key);
@@ -75,13 +75,13 @@ Shader::Shader(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode
   packBgr_ = packBgr();
 }
 
-void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, Image& color,
+void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color,
                    const FrameGeometry* geometry) {
   fb_ = &fb;
   color_ = &color;
   scale_ = scale;
   shadedRows_ = 0;
-  color.create(fb.height() / scale, fb.width() / scale, PixelFormat::kBgr8);
+  color.create(fb.height() / scale, fb.width() / scale, CV_8UC3);
   modelView_.clear();
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
     modelView_.push_back(camera.view * scene_.modelMatrix(k));
@@ -95,13 +95,13 @@ void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, Image
   if (surface_) surface_->begin(modelView_, camera, fb.width(), fb.height());
   perFace_ = scale == 1 && faceColors_;
   earlyShading_ = false;
-  rowDone_.assign(size_t(color.rows()), 0);
+  rowDone_.assign(size_t(color.rows), 0);
 }
 
 void Shader::rowsFinal(int sampleRows) {
   // Depth mode stretches over the depths of the whole frame: it waits for finish().
   if (mode_ == ShadingMode::Depth) return;
-  shadePixelRows(std::min(sampleRows / scale_, color_->rows()));
+  shadePixelRows(std::min(sampleRows / scale_, color_->rows));
 }
 
 void Shader::findDepthRange(size_t begin, size_t end, float& lo, float& hi) const {
@@ -121,7 +121,7 @@ void Shader::finish() {
     findDepthRange(0, fb_->size(), depthLo_, depthHi);
     depthRange_ = depthHi > depthLo_ ? double(depthHi) - depthLo_ : 1.0;
   }
-  shadePixelRows(color_->rows());
+  shadePixelRows(color_->rows);
 }
 
 bool Shader::prepareFaces(const Threads& threads, bool bufferFinal) {
@@ -148,8 +148,7 @@ void Shader::prepareRows(const Threads& threads) {
 
 void Shader::rowsReady(int first, int end) {
   if (!earlyShading_) return;
-  const int firstRow = (first + scale_ - 1) / scale_,
-            endRow = std::min(end / scale_, color_->rows());
+  const int firstRow = (first + scale_ - 1) / scale_, endRow = std::min(end / scale_, color_->rows);
   if (firstRow >= endRow) return;
   std::vector<uint32_t> rowColors;
   paintRows(firstRow, endRow, rowColors, true);
@@ -180,10 +179,10 @@ void Shader::finish(const Threads& threads) {
     for (size_t y = b; y < e; ++y)
       if (!rowDone_[y]) paintRows(int(y), int(y) + 1, rowColors, true);
   });
-  shadedRows_ = color_->rows();
+  shadedRows_ = color_->rows;
 }
 
-void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, Image& color) {
+void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
   begin(fb, camera, scale, color);
   finish();
 }
@@ -232,7 +231,7 @@ void Shader::shadePixelRows(int endRow) {
 
 void Shader::paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColors, bool shared) {
   const FrameBuffer& fb = *fb_;
-  Image& color = *color_;
+  cv::Mat& color = *color_;
   if (perFace_) {
     const uint32_t* table = faceColors_->table();
     if (lookup_ == FaceColors::Lookup::ById) {
@@ -252,12 +251,12 @@ void Shader::paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColor
     return;
   }
 
-  const int width = color.cols();
+  const int width = color.cols;
   rowColors.resize(2 * (size_t(fb.width()) + 16));  // 16: room for a last block past a row
   uint32_t* colors0 = rowColors.data();
   uint32_t* colors1 = colors0 + fb.width() + 16;
   for (int y = firstRow; y < endRow; ++y) {
-    uint8_t* out = color.row(y);
+    uint8_t* out = color.ptr(y);
     if (scale_ == 1 && surface_ && surfaceBgrRow_) {
       surfaceBgrRow_(*surface_, fb.row(y), fb.width(), y, background_, out);
     } else if (scale_ == 1) {

@@ -52,18 +52,18 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
         material >= 0 ? mesh.materials[size_t(material)].diffuse : cv::Vec3f(0.8f, 0.8f, 0.8f);
     face.textured = texture && allUvs;
   }
-  const Image& t = scene.texture;
+  const cv::Mat& t = scene.texture;
   if (mode == ShadingMode::Texture && !t.empty()) {
     // Framed by a copy of the last column and row before the first and of the first after the
     // last (SurfaceFrame), so that bilinear filtering reads texel pairs without wrapping.
-    const int rows = t.rows(), cols = t.cols();
+    const int rows = t.rows, cols = t.cols;
     const int stride = cols + 2;
     texels_.resize(size_t(stride) * size_t(rows + 2));  // every texel written below
     const auto texel = [](const uint8_t* bgr) {
       return uint32_t(bgr[2]) << 16 | uint32_t(bgr[1]) << 8 | bgr[0];
     };
     for (int y = 0; y < rows + 2; ++y) {
-      const uint8_t* row = t.row((y + rows - 1) % rows);
+      const uint8_t* row = t.ptr((y + rows - 1) % rows);
       uint32_t* out = texels_.data() + size_t(y) * size_t(stride);
       out[0] = texel(row + 3 * (cols - 1));
       for (int x = 0; x < cols; ++x) out[x + 1] = texel(row + 3 * x);

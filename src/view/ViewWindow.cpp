@@ -25,7 +25,7 @@ class HighguiWindow : public ViewWindow {
   HighguiWindow(const HighguiWindow&) = delete;
   HighguiWindow& operator=(const HighguiWindow&) = delete;
 
-  void show(const Image& image) override { plugin_.show(handle_, &image); }
+  void show(const cv::Mat& image) override { plugin_.show(handle_, &image); }
   int waitKey(int milliseconds) override { return plugin_.waitKey(handle_, milliseconds); }
 
  private:

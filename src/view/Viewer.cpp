@@ -86,7 +86,7 @@ void Viewer::printFigures() {
 void Viewer::run(ViewWindow& window) {
   size_t nextKey = 0;
   double lastFrameStart = nowMs(), lastPrint = lastFrameStart;
-  Image shown;
+  cv::Mat shown;
   for (;;) {
     const double frameStart = nowMs();
     if (framesShown_ > 0) controls_.advance((frameStart - lastFrameStart) / 1000.0);

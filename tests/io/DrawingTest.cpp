@@ -1,6 +1,6 @@
-// The images drawn by the drawing plugin (io/Drawing.hpp), through the plugin as the program
-// loads it: the overlay drawn on a copy, only inside its box in the top-left corner, white text
-// that fits the frame; a contact sheet's cells the frames scaled down; a chart.
+// The images drawn with imgproc (io/Drawing.hpp): the overlay drawn on a copy, only inside its box
+// in the top-left corner, white text that fits the frame; a contact sheet's cells the frames scaled
+// down; a chart.
 
 #include <gtest/gtest.h>
 
@@ -8,10 +8,10 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/core/mat.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "zrender/io/Drawing.hpp"
-#include "zrender/io/ImageMat.hpp"
 
 namespace zrender {
 namespace {
@@ -25,7 +25,7 @@ TEST(Drawing, AnOverlayIsDrawnOnACopyInsideItsBoxOnly) {
   for (const cv::Size size : {cv::Size(640, 480), cv::Size(200, 150), cv::Size(1800, 1800)}) {
     cv::Mat frame(size, CV_8UC3, cv::Scalar(40, 200, 90));
     const cv::Mat before = frame.clone();
-    const cv::Mat shown = asMat(withOverlay(viewOf(frame), kLines)).clone();
+    const cv::Mat shown = withOverlay(frame, kLines).clone();
     EXPECT_EQ(cv::norm(frame, before, cv::NORM_INF), 0.0) << "the frame itself changed";
     const PixelBox b = overlayBox(size.width, size.height, kLines);
     const cv::Rect box(b.x, b.y, b.width, b.height);
@@ -53,17 +53,17 @@ TEST(Drawing, AnOverlayIsDrawnOnACopyInsideItsBoxOnly) {
 // Each cell is its frame scaled down by OpenCV's area average: frames of one color give cells
 // of that color, in order, left to right and top to bottom.
 TEST(Drawing, AContactSheetTilesItsFramesScaledDown) {
-  std::vector<Image> frames;
+  std::vector<cv::Mat> frames;
   for (int i = 0; i < 5; ++i) {
-    Image frame(900, 1200, PixelFormat::kBgr8);
-    asMat(frame).setTo(cv::Scalar(10 * i, 20 + i, 200 - 30 * i));
+    cv::Mat frame(900, 1200, CV_8UC3);
+    frame.setTo(cv::Scalar(10 * i, 20 + i, 200 - 30 * i));
     frames.push_back(frame);
   }
-  const Image sheet = contactSheet(frames);
+  const cv::Mat sheet = contactSheet(frames);
   // 3 columns of 600 pixels (1800 / 3), cells 450 high, 2 rows.
-  ASSERT_EQ(sheet.cols(), 1800);
-  ASSERT_EQ(sheet.rows(), 900);
-  const cv::Mat m = asMat(sheet);
+  ASSERT_EQ(sheet.cols, 1800);
+  ASSERT_EQ(sheet.rows, 900);
+  const cv::Mat m = sheet;
   for (int i = 0; i < 5; ++i)
     EXPECT_EQ(m.at<cv::Vec3b>((i / 3) * 450 + 200, (i % 3) * 600 + 300),
               cv::Vec3b(uchar(10 * i), uchar(20 + i), uchar(200 - 30 * i)))
@@ -73,9 +73,9 @@ TEST(Drawing, AContactSheetTilesItsFramesScaledDown) {
 
 // A chart: white, with a bar of each position's color standing on the baseline.
 TEST(Drawing, AChartHasItsBarsOnAWhiteBackground) {
-  const Image chart = drawBarChart("t", {{"bunny", {{"zbuffer", 8.0, 4.0}, {"octree", 2.0, 0}}}});
+  const cv::Mat chart = drawBarChart("t", {{"bunny", {{"zbuffer", 8.0, 4.0}, {"octree", 2.0, 0}}}});
   ASSERT_FALSE(chart.empty());
-  const cv::Mat m = asMat(chart);
+  const cv::Mat m = chart;
   EXPECT_EQ(m.at<cv::Vec3b>(5, 5), cv::Vec3b(255, 255, 255));
   // The first bar (x 40..110) is full height (baseline 410, 320 high); its lower half darker.
   EXPECT_EQ(m.at<cv::Vec3b>(120, 75), cv::Vec3b(180, 119, 31));

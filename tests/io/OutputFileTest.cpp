@@ -41,7 +41,7 @@ TEST(OutputFile, AFailedRenameGivesItsReason) {
   TempDir dir;
   fs::create_directories(dir.file("c.png"));
   try {
-    writeImageAtomically(dir.file("c.png"), Image(2, 2, PixelFormat::kBgr8));
+    writeImageAtomically(dir.file("c.png"), cv::Mat(2, 2, CV_8UC3));
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
+#include <opencv2/core/mat.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "support/PngFiles.hpp"
@@ -21,7 +22,6 @@
 #include "zrender/base/Error.hpp"
 #include "zrender/base/Threads.hpp"
 #include "zrender/io/ImageCodecs.hpp"
-#include "zrender/io/ImageMat.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/io/PngWriter.hpp"
 
@@ -39,10 +39,6 @@ cv::Mat noise(int width, int height, int type) {
   cv::RNG rng(uint64(width) * 7919 + uint64(height) * 31 + uint64(type));
   rng.fill(image, cv::RNG::UNIFORM, 0, image.depth() == CV_16U ? 65536 : 256);
   return image;
-}
-
-bool samePixels(const cv::Mat& a, const cv::Mat& b) {
-  return a.type() == b.type() && a.size() == b.size() && cv::norm(a, b, cv::NORM_INF) == 0;
 }
 
 // Everything a reader can check of the PNG file at `path`, which should hold `image`.
@@ -86,7 +82,7 @@ void encodeInto(const std::string& path, const cv::Mat& image, const Threads& th
   std::FILE* file = std::fopen(path.c_str(), "wb");
   ASSERT_NE(file, nullptr);
   std::string error;
-  EXPECT_TRUE(encodePng(file, viewOf(image), threads, error, stripBytes)) << error;
+  EXPECT_TRUE(encodePng(file, image, threads, error, stripBytes)) << error;
   EXPECT_EQ(std::fclose(file), 0);
 }
 
@@ -114,7 +110,7 @@ TEST(PngWriter, OddSizesAndTypesDecodeToTheirPixels) {
     const Threads threads(count);
     for (const Case& c : oddImages()) {
       SCOPED_TRACE(std::string(c.name) + ", threads " + std::to_string(count));
-      writeImageAtomically(dir.file("a.png"), viewOf(c.image), &threads);
+      writeImageAtomically(dir.file("a.png"), c.image, &threads);
       expectPngOf(dir.file("a.png"), c.image);
     }
   }
@@ -156,14 +152,14 @@ cv::Mat picture(int width, int height) {
 TEST(PngWriter, TheFileDoesNotDependOnTheThreads) {
   TempDir dir;
   for (const cv::Mat& image : {noise(640, 480, CV_8UC3), picture(1800, 700)}) {
-    writeImageAtomically(dir.file("one.png"), viewOf(image));  // no threads given: one
+    writeImageAtomically(dir.file("one.png"), image);  // no threads given: one
     const std::string one = test::readFile(dir.file("one.png"));
     expectPngOf(dir.file("one.png"), image);
     for (const int count : kThreadCounts) {
       const Threads threads(count);
       for (int again = 0; again < 3; ++again) {  // threads finish in another order each time
         SCOPED_TRACE(std::to_string(count) + " threads, time " + std::to_string(again));
-        writeImageAtomically(dir.file("n.png"), viewOf(image), &threads);
+        writeImageAtomically(dir.file("n.png"), image, &threads);
         EXPECT_TRUE(test::readFile(dir.file("n.png")) == one);
       }
     }
@@ -175,7 +171,7 @@ TEST(PngWriter, NoiseSpansSeveralChunks) {
   TempDir dir;
   const cv::Mat image = noise(1801, 300, CV_8UC3);
   const Threads threads(2);
-  writeImageAtomically(dir.file("n.png"), viewOf(image), &threads);
+  writeImageAtomically(dir.file("n.png"), image, &threads);
   expectPngOf(dir.file("n.png"), image);
   size_t idats = 0;
   for (const test::PngChunk& c : test::readPngParts(dir.file("n.png")).chunks)
@@ -191,7 +187,7 @@ TEST(PngWriter, AFullDeviceGivesItsReason) {
       std::FILE* full = std::fopen("/dev/full", "wb");
       ASSERT_NE(full, nullptr);
       std::string error;
-      EXPECT_FALSE(encodePng(full, viewOf(noise(size, size, CV_8UC3)), Threads(count), error));
+      EXPECT_FALSE(encodePng(full, noise(size, size, CV_8UC3), Threads(count), error));
       EXPECT_EQ(error, std::strerror(ENOSPC));
       std::fclose(full);
     }
@@ -214,7 +210,7 @@ TEST(PngWriter, AWriteCutShortLeavesTheOldFile) {
   for (const int count : {1, 2}) {
     const Threads threads(count);
     try {
-      writeImageAtomically(path, viewOf(noise(256, 256, CV_8UC3)), &threads);
+      writeImageAtomically(path, noise(256, 256, CV_8UC3), &threads);
     } catch (const InputError& e) {
       message += std::string(e.what()) + "\n";
     }
@@ -233,7 +229,7 @@ TEST(PngWriter, ImpossiblePathsAndTypesFailAsBefore) {
   const Threads threads(2);
   const cv::Mat image(4, 4, CV_8UC3, cv::Scalar(1, 2, 3));
   try {
-    writeImageAtomically(dir.file("file/x.png"), viewOf(image), &threads);
+    writeImageAtomically(dir.file("file/x.png"), image, &threads);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()).rfind(dir.file("file/x.png") + ": cannot create folder: ", 0),
@@ -241,7 +237,7 @@ TEST(PngWriter, ImpossiblePathsAndTypesFailAsBefore) {
         << e.what();
   }
   try {
-    writeImageAtomically(dir.file("f.png"), viewOf(cv::Mat(4, 4, CV_32FC1, 0.5)), &threads);
+    writeImageAtomically(dir.file("f.png"), cv::Mat(4, 4, CV_32FC1, 0.5), &threads);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), dir.file("f.png") + ": PNG cannot hold this image type");

@@ -24,7 +24,7 @@ TEST(SceneFiles, ATexturedSceneLoadsTheSameOnTwoThreads) {
   EXPECT_EQ(a.mesh->positions, b.mesh->positions);
   EXPECT_EQ(a.mesh->faceStart, b.mesh->faceStart);
   ASSERT_FALSE(a.texture.empty());
-  EXPECT_TRUE(a.texture.samePixels(b.texture));
+  EXPECT_TRUE(samePixels(a.texture, b.texture));
   EXPECT_EQ(alone, together);
 }
 

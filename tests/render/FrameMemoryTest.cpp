@@ -12,8 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include <opencv2/core/mat.hpp>
+
 #include "support/TestSupport.hpp"
-#include "zrender/io/ImageMat.hpp"
 #include "zrender/render/FrameMemory.hpp"
 #include "zrender/render/Renderer.hpp"
 
@@ -26,7 +27,7 @@ FrameMemory touched(int width, int height, int msaa) {
   FrameMemory m(width, height, msaa);
   for (size_t part = 0; part < m.parts(); ++part) m.touchPart(part);
   std::fill(m.buffer.data(), m.buffer.data() + m.buffer.size(), DepthKey(0));
-  asMat(m.color.image()).setTo(cv::Scalar::all(7));
+  m.color.image().setTo(cv::Scalar::all(7));
   return m;
 }
 
@@ -47,9 +48,9 @@ TEST(FrameMemory, BuffersHaveTheFramesSize) {
     const int scale = msaa == 4 ? 2 : 1;
     EXPECT_EQ(m.buffer.width(), 7 * scale);
     EXPECT_EQ(m.buffer.height(), 5 * scale);
-    EXPECT_EQ(asMat(m.color.image()).cols, 7);
-    EXPECT_EQ(asMat(m.color.image()).rows, 5);
-    EXPECT_EQ(asMat(m.color.image()).type(), CV_8UC3);
+    EXPECT_EQ(m.color.image().cols, 7);
+    EXPECT_EQ(m.color.image().rows, 5);
+    EXPECT_EQ(m.color.image().type(), CV_8UC3);
   }
 }
 
@@ -59,27 +60,27 @@ TEST(FrameMemory, PartsFaultInEveryPage) {
   FrameMemory m(1000, 900, 4);  // 28.8 MB of keys, 2.7 MB of color
   ASSERT_EQ(m.parts(), 14u + 2u);
   const size_t keyBytes = m.buffer.size() * sizeof(DepthKey);
-  const size_t colorBytes = asMat(m.color.image()).total() * asMat(m.color.image()).elemSize();
+  const size_t colorBytes = m.color.image().total() * m.color.image().elemSize();
   const size_t page = size_t(sysconf(_SC_PAGESIZE));
   EXPECT_LT(residentPages(m.buffer.data(), keyBytes), keyBytes / page / 2);
-  EXPECT_LT(residentPages(asMat(m.color.image()).data, colorBytes), colorBytes / page / 2);
+  EXPECT_LT(residentPages(m.color.image().data, colorBytes), colorBytes / page / 2);
   for (size_t part = 0; part < m.parts(); ++part) m.touchPart(part);
   EXPECT_EQ(residentPages(m.buffer.data(), keyBytes), (keyBytes + page - 1) / page);
-  EXPECT_EQ(residentPages(asMat(m.color.image()).data, colorBytes), (colorBytes + page - 1) / page);
+  EXPECT_EQ(residentPages(m.color.image().data, colorBytes), (colorBytes + page - 1) / page);
 }
 
 TEST(FrameMemory, AColorImageKeepsItsPixelsWhereTheyAreWhenMoved) {
   ColorImage a;
   EXPECT_TRUE(a.resize(4, 3));
   EXPECT_FALSE(a.resize(4, 3));  // the same size: the same memory
-  asMat(a.image()).setTo(cv::Scalar(1, 2, 3));
-  const unsigned char* pixels = asMat(a.image()).data;
+  a.image().setTo(cv::Scalar(1, 2, 3));
+  const unsigned char* pixels = a.image().data;
   ColorImage b(std::move(a));
-  EXPECT_EQ(asMat(b.image()).data, pixels);
-  EXPECT_EQ(asMat(b.image()).at<cv::Vec3b>(2, 3), cv::Vec3b(1, 2, 3));
+  EXPECT_EQ(b.image().data, pixels);
+  EXPECT_EQ(b.image().at<cv::Vec3b>(2, 3), cv::Vec3b(1, 2, 3));
   EXPECT_TRUE(b.resize(3, 4));  // another size: new memory
-  EXPECT_EQ(asMat(b.image()).cols, 3);
-  EXPECT_EQ(asMat(b.image()).rows, 4);
+  EXPECT_EQ(b.image().cols, 3);
+  EXPECT_EQ(b.image().rows, 4);
 }
 
 // A frame drawn into adopted buffers, of the frame's size or another, against one drawn into

@@ -23,7 +23,7 @@ test::Rendered renderWith(const Scene& scene, const std::string& algorithm, int 
   renderer.renderFrame(makeCamera(scene));
   // A second frame too: what a renderer keeps from frame to frame must not change it.
   renderer.renderFrame(makeCamera(scene));
-  return test::Rendered{renderer.buffer(), asMat(renderer.color()).clone(), renderer.stats()};
+  return test::Rendered{renderer.buffer(), renderer.color().clone(), renderer.stats()};
 }
 
 // Every algorithm with `threadCounts` threads against itself with one.

@@ -33,7 +33,7 @@ Difference compareWithReference(const Scene& scene) {
   const cv::Mat reference =
       test::referenceImage(scene, camera, renderer.buffer(), renderer.sampleScale());
   cv::Mat difference;
-  cv::absdiff(asMat(renderer.color()), reference, difference);
+  cv::absdiff(renderer.color(), reference, difference);
   Difference d;
   cv::minMaxLoc(difference.reshape(1), nullptr, &d.largest);
   d.channelsOffByOne = cv::countNonZero(difference.reshape(1) == 1);

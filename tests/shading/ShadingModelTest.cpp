@@ -98,11 +98,10 @@ TEST(ShadingModel, TextureIsBilinearWrappedWithVUp) {
   s.shading = ShadingMode::Texture;
   Warnings warnings;
   Scene scene = makeScene(s, mesh);
-  scene.texture = Image(2, 2, PixelFormat::kBgr8);
+  scene.texture = cv::Mat(2, 2, CV_8UC3);
   for (int row = 0; row < 2; ++row)
     for (int column = 0; column < 2; ++column)
-      asMat(scene.texture).at<cv::Vec3b>(row, column) =
-          cv::Vec3b(row == 0 ? 255 : 0, 0, column * 255);
+      scene.texture.at<cv::Vec3b>(row, column) = cv::Vec3b(row == 0 ? 255 : 0, 0, column * 255);
   const test::Rendered r = test::render(scene, "zbuffer");
   const auto weight = [](double t) {
     return t < 0.25 ? 0.5 - 2 * t : t > 0.75 ? 2.5 - 2 * t : 2 * t - 0.5;

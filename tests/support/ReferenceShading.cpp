@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "zrender/io/ImageMat.hpp"
+#include <opencv2/core/mat.hpp>
+
 #include "zrender/shading/FaceColors.hpp"
 #include "zrender/shading/ShadingModel.hpp"
 
@@ -105,7 +106,7 @@ uint32_t ReferenceSurfaceShading::faceShadeIndex(uint32_t faceId) {
 
 cv::Vec3f ReferenceSurfaceShading::sampleTexture(const cv::Vec2d& uv) const {
   // Bilinear, wrapping; v = 0 is the bottom row of the image (OBJ convention).
-  const cv::Mat t = asMat(scene_.texture);
+  const cv::Mat t = scene_.texture;
   const double u = uv[0] - std::floor(uv[0]), v = uv[1] - std::floor(uv[1]);
   const double x = u * t.cols - 0.5, y = (1.0 - v) * t.rows - 0.5;
   const int x0 = int(std::floor(x)), y0 = int(std::floor(y));

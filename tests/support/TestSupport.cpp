@@ -48,7 +48,7 @@ Rendered render(const Scene& scene, const std::string& algorithm) {
   Renderer renderer(scene, algorithm);
   const Camera camera = makeCamera(scene);
   renderer.renderFrame(camera);
-  return Rendered{renderer.buffer(), asMat(renderer.color()).clone(), renderer.stats()};
+  return Rendered{renderer.buffer(), renderer.color().clone(), renderer.stats()};
 }
 
 Rendered render(std::shared_ptr<const Mesh> mesh, const SceneSettings& settings,

@@ -9,7 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "zrender/io/ImageMat.hpp"
+#include <opencv2/core/mat.hpp>
+
 #include "zrender/io/SceneValidation.hpp"
 #include "zrender/io/SettingsFile.hpp"
 #include "zrender/raster/FrameBuffer.hpp"

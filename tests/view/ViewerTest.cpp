@@ -23,7 +23,7 @@ class RecordingWindow : public ViewWindow {
  public:
   explicit RecordingWindow(std::deque<int> codes, bool closeAtEnd = false)
       : codes_(std::move(codes)), closeAtEnd_(closeAtEnd) {}
-  void show(const Image& image) override { shown.push_back(asMat(image).clone()); }
+  void show(const cv::Mat& image) override { shown.push_back(image.clone()); }
   int waitKey(int milliseconds) override {
     // As long as a window would wait, so that the orbit moves between frames as it does there.
     std::this_thread::sleep_for(std::chrono::milliseconds(milliseconds));
@@ -77,7 +77,7 @@ cv::Mat renderedAlone(const Scene& loaded, const Viewer& view) {
   const Scene scene = makeScene(s, loaded.mesh);
   Renderer renderer(scene, view.state().algorithm);
   renderer.renderFrame(view.lastCamera());
-  return asMat(renderer.color()).clone();
+  return renderer.color().clone();
 }
 
 TEST(Viewer, KeysActOnePerFrameAndEveryFrameIsTheRenderersImage) {
@@ -104,7 +104,7 @@ TEST(Viewer, KeysActOnePerFrameAndEveryFrameIsTheRenderersImage) {
   // The last frame is exactly what a renderer of its own makes for that camera; the window got
   // it with the overlay drawn inside the overlay's box only.
   const cv::Mat alone = renderedAlone(run.scene, view);
-  EXPECT_EQ(cv::norm(asMat(view.lastFrame()), alone, cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(view.lastFrame(), alone, cv::NORM_INF), 0.0);
   EXPECT_GT(cv::countNonZero(alone.reshape(1)), 100);
   const cv::Mat& shown = window.shown.back();
   const cv::Rect top(0, 0, shown.cols, shown.rows / 2),
@@ -146,8 +146,8 @@ TEST(Viewer, WindowKeysActAndClosingTheWindowStops) {
   EXPECT_EQ(view.state().shading, ShadingMode::Flat);
   // The frames on screen when 5 and T were pressed, and the last.
   ASSERT_EQ(view.sheet().size(), 3u);
-  EXPECT_EQ(cv::norm(asMat(view.sheet()[0]), window.shown[1], cv::NORM_INF), 0.0);
-  EXPECT_EQ(cv::norm(asMat(view.sheet()[2]), window.shown[5], cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(view.sheet()[0], window.shown[1], cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(view.sheet()[2], window.shown[5], cv::NORM_INF), 0.0);
 }
 
 TEST(Viewer, KeysOfTheListComeEveryIntervalFrames) {

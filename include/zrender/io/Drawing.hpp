@@ -1,15 +1,12 @@
 #pragma once
 
-// Images drawn with OpenCV's imgproc: the bench's chart, the viewer's overlay and contact
-// sheets. imgproc and OpenCV's core live in a plugin (libzrender_drawing.so, loaded on first
-// use, src/io/drawing/OpenCvDrawing.cpp), so that the runs that draw none of these do not load
-// them at their start: 1.85 ms of every process on this machine (docs/design.md, Plugins).
-// Each function throws std::runtime_error when the plugin cannot be loaded.
+// Images drawn with OpenCV's imgproc, in the process: the bench's chart, the viewer's overlay
+// and contact sheets. Each throws cv::Exception when OpenCV does.
 
 #include <string>
 #include <vector>
 
-#include "zrender/base/Image.hpp"
+#include <opencv2/core/mat.hpp>
 
 namespace zrender {
 
@@ -30,7 +27,7 @@ struct ChartGroup {
 
 // A grouped bar chart (8-bit BGR, white background). Each group is scaled to its own largest
 // value, since scenes differ by orders of magnitude.
-Image drawBarChart(const std::string& title, const std::vector<ChartGroup>& groups);
+cv::Mat drawBarChart(const std::string& title, const std::vector<ChartGroup>& groups);
 
 // A rectangle of pixels: its top-left corner and its size.
 struct PixelBox {
@@ -43,11 +40,11 @@ PixelBox overlayBox(int width, int height, const std::vector<std::string>& lines
 
 // A copy of `frame` (8-bit BGR) with `lines` written in white on a darkened box (overlayBox);
 // the frame itself is left as the renderer made it.
-Image withOverlay(const Image& frame, const std::vector<std::string>& lines);
+cv::Mat withOverlay(const cv::Mat& frame, const std::vector<std::string>& lines);
 
 // Frames (8-bit BGR, all of the first one's size) tiled left to right, top to bottom in a
 // square grid, each scaled to fit a sheet about 1800 pixels wide and never enlarged: a
 // turntable's frames (--contact-sheet) or the frames a viewer showed.
-Image contactSheet(const std::vector<Image>& frames);
+cv::Mat contactSheet(const std::vector<cv::Mat>& frames);
 
 }  // namespace zrender

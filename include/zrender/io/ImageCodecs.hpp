@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "zrender/base/Image.hpp"
+#include <opencv2/core/mat.hpp>
 
 namespace zrender {
 
@@ -25,7 +25,7 @@ std::string lowerExtension(const std::filesystem::path& path);
 // Encodes `image` (8-bit gray or BGR, 16-bit gray, or float for .tif/.exr) in memory in the
 // format of `extension` (".jpg", ".tif", ...; PNG is PngWriter's). Returns false and sets
 // `error` on failure.
-bool encodeImage(const std::string& extension, const Image& image,
+bool encodeImage(const std::string& extension, const cv::Mat& image,
                  std::vector<unsigned char>& bytes, std::string& error);
 
 // The most pixels an image read (a texture) may have: 16384 x 8192, 384 MiB as 8-bit BGR. The
@@ -34,7 +34,7 @@ inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 27;
 
 // Decodes an image file into 8-bit BGR. Returns an empty image and sets `error` (what follows
 // the file's name: "is too large (...)", "cannot be opened: ...") on failure.
-Image decodeColorImage(const std::filesystem::path& path, std::string& error);
+cv::Mat decodeColorImage(const std::filesystem::path& path, std::string& error);
 
 // A video file being written (.mp4: MPEG-4 part 2, .avi: Motion JPEG), 8-bit BGR frames.
 class VideoFile {
@@ -45,8 +45,8 @@ class VideoFile {
   VideoFile(const VideoFile&) = delete;
   VideoFile& operator=(const VideoFile&) = delete;
   bool isOpen() const { return handle_ != nullptr; }
-  void write(const Image& frame);  // 8-bit BGR
-  void close();                    // flushes and closes; the destructor does it too
+  void write(const cv::Mat& frame);  // 8-bit BGR
+  void close();                      // flushes and closes; the destructor does it too
 
  private:
   void* handle_ = nullptr;

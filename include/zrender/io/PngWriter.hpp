@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <string>
 
-#include "zrender/base/Image.hpp"
+#include <opencv2/core/mat.hpp>
 
 namespace zrender {
 
@@ -26,14 +26,14 @@ inline constexpr size_t kPngChunkBytes = 1 << 20;
 
 // Whether encodePng can write `image`: not empty, and 8-bit BGR (stored as RGB), 8-bit gray or
 // 16-bit gray (stored big-endian).
-bool pngCanHold(const Image& image);
+bool pngCanHold(const cv::Mat& image);
 
 // Writes `image` (pngCanHold) as a PNG file into `file`, its strips of about `stripBytes` (at
 // least one row each) deflated by `threads` and written in order as each is done, each strip
 // its own IDAT chunks. The bytes written do not depend on the number of threads. Returns false and
 // sets `error` ("out of memory", or the system's reason for a failed write) on failure; `file` is
 // left open either way.
-bool encodePng(std::FILE* file, const Image& image, const Threads& threads, std::string& error,
+bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, std::string& error,
                size_t stripBytes = kPngStripBytes);
 
 }  // namespace zrender

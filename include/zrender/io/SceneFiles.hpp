@@ -13,7 +13,7 @@ class Threads;
 // map_Kd; empty when there is none. A `texture` key naming a file that cannot be read is bad
 // input (InputError); a material's map_Kd that cannot be read is a warning, and the model is
 // drawn without it.
-Image loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings);
+cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings);
 
 // The scene of `settings`: its model file, its texture, its instances. Throws InputError. With
 // `threads` (more than one), a `texture` key's image is read while the model loads.

@@ -3,8 +3,9 @@
 #include <cstddef>
 #include <vector>
 
+#include <opencv2/core/mat.hpp>
+
 #include "zrender/base/HugePageAllocator.hpp"
-#include "zrender/base/Image.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 
 namespace zrender {
@@ -24,12 +25,12 @@ class ColorImage {
   // Sizes it to `width` x `height` pixels: new memory, its pixels indeterminate, when the
   // size changes; true then.
   bool resize(int width, int height);
-  Image& image() { return image_; }
-  const Image& image() const { return image_; }
+  cv::Mat& image() { return image_; }
+  const cv::Mat& image() const { return image_; }
 
  private:
   std::vector<unsigned char, HugePageAllocator<unsigned char>> bytes_;
-  Image image_;  // 8-bit BGR, a view of bytes_
+  cv::Mat image_;  // 8-bit BGR, a view of bytes_
 };
 
 // The buffers a Renderer draws frames into: the key buffer and the color image.

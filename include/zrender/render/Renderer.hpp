@@ -5,8 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core/mat.hpp>
+
 #include "zrender/base/Clock.hpp"
-#include "zrender/base/Image.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/raster/RenderStats.hpp"
@@ -59,7 +60,7 @@ class Renderer {
   const Threads& threadPool() const { return threads_; }
   int sampleScale() const { return sampleScale_; }
   const FrameBuffer& buffer() const { return memory_.buffer; }
-  const Image& color() const { return memory_.color.image(); }
+  const cv::Mat& color() const { return memory_.color.image(); }
   const RenderStats& stats() const { return stats_; }
   // The faces the last frame transformed and kept (algorithms that cull early keep fewer);
   // their triangles only where the algorithm keeps them (not the octree: FrameInput).
@@ -82,9 +83,12 @@ class Renderer {
   RenderStats stats_;
 };
 
+// Whether two images have the same size, type and pixels (padding between rows aside).
+bool samePixels(const cv::Mat& a, const cv::Mat& b);
+
 // Whether two frames agree bit for bit: keys (so depth and face ids) and colors. What
 // `zrender bench` checks every algorithm against the z-buffer with.
-bool identicalFrames(const FrameBuffer& a, const Image& colorA, const FrameBuffer& b,
-                     const Image& colorB);
+bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuffer& b,
+                     const cv::Mat& colorB);
 
 }  // namespace zrender

@@ -3,7 +3,8 @@
 #include <memory>
 #include <vector>
 
-#include "zrender/base/Image.hpp"
+#include <opencv2/core/mat.hpp>
+
 #include "zrender/scene/Mesh.hpp"
 #include "zrender/scene/SceneSettings.hpp"
 #include "zrender/scene/Transforms.hpp"
@@ -22,7 +23,7 @@ struct Scene {
   std::shared_ptr<const Mesh> mesh;
   std::vector<Vec3>
       instanceOffsets;         // grid offset of instance k, model units (docs/design.md, Settings)
-  Image texture;               // 8-bit BGR, or empty
+  cv::Mat texture;             // 8-bit BGR, or empty
   Vec3 boundsCentre{0, 0, 0};  // bounding sphere of all instances after rotation
   double boundsRadius = 0.0;
   Box3 meshBox;  // the mesh's box, model space (before the rotation)
@@ -36,7 +37,7 @@ struct Scene {
 // Builds the instances and bounds (InputError when the scene has more than kMaxSceneFaces);
 // `texture` (8-bit BGR, or empty) is the scene's diffuse texture, as io's loadTexture() reads it.
 Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
-                Image texture = Image());
+                cv::Mat texture = cv::Mat());
 
 // Number of triangles the faces make once triangulated (n - 2 per face of n >= 3 corners),
 // all instances included.

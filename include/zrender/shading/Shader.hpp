@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "zrender/base/Image.hpp"
+#include <opencv2/core/mat.hpp>
 
 #include "zrender/base/Threads.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
@@ -32,7 +32,7 @@ class Shader {
   // Fills `color` (8-bit BGR, pixels) from `fb` (samples; sampleScale 2 = MSAA 4, whose
   // pixel is the rounded mean of its four samples' colors, background included; in id mode,
   // the color of its nearest sample, as idImage()).
-  void shade(const FrameBuffer& fb, const Camera& camera, int sampleScale, Image& color);
+  void shade(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color);
 
   // The same in steps, so that rows are colored while their keys are still in cache: begin()
   // sizes `color` and sets the frame up (`geometry`, when given, holds every face that may be
@@ -41,7 +41,7 @@ class Shader {
   // pixel rows they complete (depth mode, which stretches over the whole frame's depths,
   // waits); finish() colors the rest. `fb` and `color` must stay alive and unresized until
   // finish().
-  void begin(const FrameBuffer& fb, const Camera& camera, int sampleScale, Image& color,
+  void begin(const FrameBuffer& fb, const Camera& camera, int sampleScale, cv::Mat& color,
              const FrameGeometry* geometry = nullptr);
   void rowsFinal(int sampleRows);
   void finish();
@@ -86,7 +86,7 @@ class Shader {
 
   // Per frame.
   const FrameBuffer* fb_ = nullptr;
-  Image* color_ = nullptr;
+  cv::Mat* color_ = nullptr;
   int scale_ = 1;
   int shadedRows_ = 0;  // pixel rows colored so far
   uint32_t background_ = 0;

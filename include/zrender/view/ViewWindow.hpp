@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "zrender/base/Image.hpp"
+#include <opencv2/core/mat.hpp>
 
 namespace zrender {
 
@@ -16,7 +16,7 @@ class ViewWindow {
   static constexpr int kClosed = -2;  // waitKey: the user closed the window
 
   virtual ~ViewWindow() = default;
-  virtual void show(const Image& image) = 0;  // 8-bit BGR
+  virtual void show(const cv::Mat& image) = 0;  // 8-bit BGR
   // Lets the window run for up to `milliseconds`; the code of a key pressed meanwhile (see
   // ViewKey), -1 for none, or kClosed.
   virtual int waitKey(int milliseconds) = 0;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "zrender/base/Image.hpp"
+#include <opencv2/core/mat.hpp>
 
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
@@ -48,12 +48,12 @@ class Viewer {
   int framesShown() const { return framesShown_; }
   const ViewState& state() const { return shownState_; }  // of the last frame shown
   const Camera& lastCamera() const { return lastCamera_; }
-  const Image& lastFrame() const { return renderer_->color(); }  // without the overlay
+  const cv::Mat& lastFrame() const { return renderer_->color(); }  // without the overlay
   // `zrender SCENE ...` rendering the last frame exactly (frameCommand).
   std::string lastFrameCommand() const;
   // With options.collectSheet: the frames on screen (overlay included) when a key changed
   // something (not enter or quit), at most options.sheetFrames - 1, and the last frame.
-  const std::vector<Image>& sheet() const { return sheet_; }
+  const std::vector<cv::Mat>& sheet() const { return sheet_; }
 
  private:
   void rebuild(ViewEffect effect);
@@ -71,7 +71,7 @@ class Viewer {
   FrameTimes times_;
   Camera lastCamera_;
   int framesShown_ = 0;
-  std::vector<Image> sheet_;
+  std::vector<cv::Mat> sheet_;
 };
 
 }  // namespace zrender

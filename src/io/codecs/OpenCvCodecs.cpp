@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <opencv2/core/mat.hpp>
 #include <opencv2/core/utils/logger.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
@@ -13,7 +14,6 @@
 #include "zrender/base/Plugin.hpp"
 #include "zrender/io/CodecPlugin.h"
 #include "zrender/io/ImageCodecs.hpp"
-#include "zrender/io/ImageMat.hpp"
 
 using zrender::setPluginError;
 
@@ -43,11 +43,11 @@ class CerrCapture {
 extern "C" {
 
 __attribute__((visibility("default"))) int zrenderImencode(const char* extension,
-                                                           const zrender::Image* image, void* out,
+                                                           const cv::Mat* image, void* out,
                                                            char* error, size_t size) {
   try {
     auto& bytes = *static_cast<std::vector<unsigned char>*>(out);
-    if (cv::imencode(extension, zrender::asMat(*image), bytes)) return 0;
+    if (cv::imencode(extension, *image, bytes)) return 0;
     setPluginError(error, size, "cannot encode image");
   } catch (const cv::Exception& e) {
     setPluginError(error, size, "cannot encode image: " + e.msg);
@@ -55,7 +55,7 @@ __attribute__((visibility("default"))) int zrenderImencode(const char* extension
   return 1;
 }
 
-__attribute__((visibility("default"))) int zrenderImread(const char* path, zrender::Image* out,
+__attribute__((visibility("default"))) int zrenderImread(const char* path, cv::Mat* out,
                                                          char* error, size_t size) {
   const CerrCapture capture;
   // OpenCV checks the header's size against OPENCV_IO_MAX_IMAGE_PIXELS (which zrender sets)
@@ -67,7 +67,10 @@ __attribute__((visibility("default"))) int zrenderImread(const char* path, zrend
       "is too large (over " + std::to_string(zrender::kMaxImagePixels) + " pixels)";
   try {
     const cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
-    if (!image.empty() && zrender::copyToImage(image, *out)) return 0;
+    if (!image.empty()) {
+      *out = image;
+      return 0;
+    }
     setPluginError(error, size,
                    tooLarge(capture.said()) ? largeMessage : "cannot be read as an image");
   } catch (const cv::Exception& e) {
@@ -86,9 +89,8 @@ __attribute__((visibility("default"))) void* zrenderVideoOpen(const char* path, 
   return nullptr;
 }
 
-__attribute__((visibility("default"))) int zrenderVideoWrite(void* writer,
-                                                             const zrender::Image* frame) {
-  static_cast<cv::VideoWriter*>(writer)->write(zrender::asMat(*frame));
+__attribute__((visibility("default"))) int zrenderVideoWrite(void* writer, const cv::Mat* frame) {
+  static_cast<cv::VideoWriter*>(writer)->write(*frame);
   return 0;
 }
 

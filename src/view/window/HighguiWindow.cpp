@@ -6,10 +6,10 @@
 #include <cstdlib>
 #include <string>
 
+#include <opencv2/core/mat.hpp>
 #include <opencv2/highgui.hpp>
 
 #include "zrender/base/Plugin.hpp"
-#include "zrender/io/ImageMat.hpp"
 #include "zrender/view/WindowPlugin.h"
 
 using zrender::setPluginError;
@@ -38,10 +38,9 @@ __attribute__((visibility("default"))) void* zrenderWindowOpen(const char* title
 
 // No exception crosses the C interface: a window highgui cannot draw in any more is a closed
 // one, which the next waitKey reports.
-__attribute__((visibility("default"))) void zrenderWindowShow(void* window,
-                                                              const zrender::Image* image) {
+__attribute__((visibility("default"))) void zrenderWindowShow(void* window, const cv::Mat* image) {
   try {
-    cv::imshow(*static_cast<std::string*>(window), zrender::asMat(*image));
+    cv::imshow(*static_cast<std::string*>(window), *image);
   } catch (const cv::Exception&) {
   }
 }
