@@ -6,6 +6,11 @@
 
 namespace zrender {
 
+void printWarnings(Warnings& warnings, std::ostream& err) {
+  for (const auto& w : warnings) err << "zrender: warning: " << messageLine(w) << "\n";
+  warnings.clear();
+}
+
 Json::Value statsToJson(const RenderStats& s) {
   Json::Value j(Json::objectValue);
   j["triangles_backface_culled"] = Json::UInt64(s.trianglesBackfaceCulled);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/cli/Report.hpp"
 #include "zrender/io/Drawing.hpp"
 #include "zrender/io/ImageOutput.hpp"
 #include "zrender/io/OutputFile.hpp"
@@ -15,10 +16,6 @@ namespace zrender {
 
 int runView(const ViewOptions& options, std::ostream& out, std::ostream& err) {
   Warnings warnings;
-  auto flushWarnings = [&] {
-    for (const auto& w : warnings) err << "zrender: warning: " << messageLine(w) << "\n";
-    warnings.clear();
-  };
   // Outputs are checked before the window opens, so a typo costs nothing and writes nothing.
   const auto checkExtension = [](const std::filesystem::path& path,
                                  std::initializer_list<const char*> allowed, const char* option) {
@@ -41,7 +38,7 @@ int runView(const ViewOptions& options, std::ostream& out, std::ostream& err) {
     overrides.height = std::max(1, int(std::lround(s.height * scale)));
   }
   const SceneSettings settings = resolveScene(options.scene, options.settings, overrides, warnings);
-  flushWarnings();
+  printWarnings(warnings, err);
   std::vector<NamedOutput> outputs;
   if (options.saveLast) outputs.push_back({"--save-last", *options.saveLast});
   if (options.contactSheet) outputs.push_back({"--contact-sheet", *options.contactSheet});
@@ -52,7 +49,7 @@ int runView(const ViewOptions& options, std::ostream& out, std::ostream& err) {
   const std::unique_ptr<ViewWindow> window =
       openViewWindow("zrender view: " + settings.name, "view");
   const Scene scene = loadScene(settings, warnings);
-  flushWarnings();
+  printWarnings(warnings, err);
 
   ViewerOptions viewer;
   viewer.scene = options.scene;

@@ -6,11 +6,15 @@
 
 #include <json/json.h>
 
+#include "zrender/base/Error.hpp"
 #include "zrender/base/Median.hpp"
 #include "zrender/raster/RenderStats.hpp"
 #include "zrender/render/Renderer.hpp"
 
 namespace zrender {
+
+// Prints each warning on one line, "zrender: warning: TEXT" (messageLine), and clears them.
+void printWarnings(Warnings& warnings, std::ostream& err);
 
 // The `stats` object (docs/design.md, Timings and JSON).
 Json::Value statsToJson(const RenderStats& stats);
