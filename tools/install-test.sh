@@ -16,7 +16,8 @@ fail() { echo "install-test: error: $*" >&2; exit 1; }
 
 cmake --install "$build" --prefix "$prefix" >/dev/null
 z=$prefix/bin/zrender
-for f in bin/zrender lib/zrender/libzrender_codecs.so lib/zrender/libzrender_window.so share/doc/zrender/README.md; do
+for f in bin/zrender lib/zrender/libzrender_codecs.so lib/zrender/libzrender_window.so \
+  share/doc/zrender/README.md; do
   [ -f "$prefix/$f" ] || fail "not installed: $f"
 done
 if grep -rlF -e "$root" -e "$build" "$prefix" >/dev/null; then
@@ -51,7 +52,8 @@ echo "install-test: installed into a prefix, rendered .png .jpg .tif .mp4 and ra
 (cd "$build" && cpack -G DEB >/dev/null)
 deb=$(ls -t "$build"/zrender_*.deb | head -1)
 files=$(dpkg-deb -c "$deb" | awk '{print $6}')
-for f in ./usr/bin/zrender ./usr/lib/zrender/libzrender_codecs.so ./usr/./usr/lib/zrender/libzrender_window.so ./usr/share/doc/zrender/README.md; do
+for f in ./usr/bin/zrender ./usr/lib/zrender/libzrender_codecs.so \
+  ./usr/lib/zrender/libzrender_window.so ./usr/share/doc/zrender/README.md; do
   grep -qxF "$f" <<<"$files" || fail "$deb lacks $f"
 done
 depends=$(dpkg-deb -f "$deb" Depends)

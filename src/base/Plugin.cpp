@@ -3,12 +3,16 @@
 #include <dlfcn.h>
 
 #include <filesystem>
+#include <stdexcept>
 #include <vector>
 
 namespace zrender {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+// The plugin's dlopen handle, or null with the reason in `error`.
 void* openPlugin(const std::string& fileName, std::string& error) {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
@@ -30,8 +34,16 @@ void* openPlugin(const std::string& fileName, std::string& error) {
   return nullptr;
 }
 
-void* pluginSymbol(void* plugin, const char* symbol) {
-  return dlsym(plugin, symbol);
+}  // namespace
+
+void* pluginObject(const std::string& fileName, const char* factory) {
+  std::string reason;
+  void* handle = openPlugin(fileName, reason);
+  if (!handle) throw std::runtime_error("cannot load " + fileName + ": " + reason);
+  using Factory = void* (*)();
+  const auto make = reinterpret_cast<Factory>(dlsym(handle, factory));
+  if (!make) throw std::runtime_error(fileName + " has no " + factory);
+  return make();
 }
 
 }  // namespace zrender

@@ -13,7 +13,7 @@
 
 #include "zrender/base/Plugin.hpp"
 #include "zrender/base/Threads.hpp"
-#include "zrender/io/CodecPlugin.h"
+#include "zrender/io/CodecPlugin.hpp"
 #include "zrender/io/PngWriter.hpp"
 
 namespace zrender {
@@ -29,35 +29,12 @@ std::string lowerExtension(const fs::path& path) {
 
 namespace {
 
-// The plugin's entry points, resolved once on first use and never changed afterwards.
-struct CodecPlugin {
-  ZrenderImencodeFn imencode = nullptr;
-  ZrenderImreadFn imread = nullptr;
-  ZrenderVideoOpenFn videoOpen = nullptr;
-  ZrenderVideoWriteFn videoWrite = nullptr;
-  ZrenderVideoCloseFn videoClose = nullptr;
-};
-
-const CodecPlugin& codecPlugin() {
-  static const CodecPlugin plugin = [] {
+CodecPlugin& codecPlugin() {
+  static CodecPlugin& plugin = [&]() -> CodecPlugin& {
     // OpenCV reads its limit on an image's pixels when it is loaded; it checks each file's
     // header against it before allocating (docs/design.md, Limits).
     ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(kMaxImagePixels).c_str(), 1);
-    std::string reason;
-    void* handle = openPlugin("libzrender_codecs.so", reason);
-    if (!handle)
-      throw std::runtime_error("cannot load the image codec plugin libzrender_codecs.so: " +
-                               reason);
-    const auto symbol = [handle](const char* name) { return pluginSymbol(handle, name); };
-    CodecPlugin p;
-    p.imencode = reinterpret_cast<ZrenderImencodeFn>(symbol("zrenderImencode"));
-    p.imread = reinterpret_cast<ZrenderImreadFn>(symbol("zrenderImread"));
-    p.videoOpen = reinterpret_cast<ZrenderVideoOpenFn>(symbol("zrenderVideoOpen"));
-    p.videoWrite = reinterpret_cast<ZrenderVideoWriteFn>(symbol("zrenderVideoWrite"));
-    p.videoClose = reinterpret_cast<ZrenderVideoCloseFn>(symbol("zrenderVideoClose"));
-    if (!p.imencode || !p.imread || !p.videoOpen || !p.videoWrite || !p.videoClose)
-      throw std::runtime_error("the image codec plugin libzrender_codecs.so is incomplete");
-    return p;
+    return loadPlugin<CodecPlugin>("libzrender_codecs.so", "zrenderCodecPlugin");
   }();
   return plugin;
 }
@@ -102,11 +79,7 @@ cv::Mat readPng(const fs::path& path, std::string& error) {
 
 bool encodeImage(const std::string& extension, const cv::Mat& image,
                  std::vector<unsigned char>& bytes, std::string& error) {
-  char message[512] = "";
-  if (codecPlugin().imencode(extension.c_str(), &image, &bytes, message, sizeof message) == 0)
-    return true;
-  error = message;
-  return false;
+  return codecPlugin().encode(extension, image, bytes, error);
 }
 
 namespace {
@@ -134,13 +107,7 @@ cv::Mat decodeOrThrow(const fs::path& path, std::string& error) {
   std::fclose(f);
   if (n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0)
     return readPng(path, error);
-  cv::Mat out;
-  char message[512] = "";
-  if (codecPlugin().imread(path.c_str(), &out, message, sizeof message)) {
-    error = message;
-    return {};
-  }
-  return out;
+  return codecPlugin().read(path.string(), error);
 }
 
 }  // namespace
@@ -158,25 +125,22 @@ cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
 
 VideoFile::VideoFile(const fs::path& path, int width, int height, double fps) {
   const bool mp4 = lowerExtension(path) == ".mp4";
+  // As cv::VideoWriter::fourcc: four characters, the first in the lowest byte.
   const auto fourcc = [](char a, char b, char c, char d) {
     return (a & 255) + ((b & 255) << 8) + ((c & 255) << 16) + ((d & 255) << 24);
   };
-  handle_ = codecPlugin().videoOpen(path.c_str(),
-                                    mp4 ? fourcc('m', 'p', '4', 'v') : fourcc('M', 'J', 'P', 'G'),
-                                    fps, width, height);
+  const int code = mp4 ? fourcc('m', 'p', '4', 'v') : fourcc('M', 'J', 'P', 'G');
+  sink_ = codecPlugin().openVideo(path.string(), code, fps, cv::Size(width, height));
 }
 
-VideoFile::~VideoFile() {
-  close();
-}
+VideoFile::~VideoFile() = default;
 
 void VideoFile::write(const cv::Mat& frame) {
-  if (handle_) codecPlugin().videoWrite(handle_, &frame);
+  if (sink_) sink_->write(frame);
 }
 
 void VideoFile::close() {
-  if (handle_) codecPlugin().videoClose(handle_);
-  handle_ = nullptr;
+  sink_.reset();
 }
 
 }  // namespace zrender

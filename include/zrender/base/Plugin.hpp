@@ -1,29 +1,24 @@
 #pragma once
 
 // Shared libraries that zrender loads only when a command needs them (dlopen), so that their
-// dependencies cost nothing at the start of the runs that do not: OpenCV's codecs
-// (io/ImageCodecs.hpp) and its window (view/ViewWindow.hpp).
+// dependencies cost nothing at the start of the runs that do not: OpenCV's imgcodecs and
+// videoio (io/CodecPlugin.hpp) and highgui (view/WindowPlugin.hpp) (docs/design.md, Plugins).
+// A plugin gives one object through an `extern "C"` factory, an implementation of an abstract
+// class that both sides compile from the same header.
 
-#include <algorithm>
-#include <cstddef>
-#include <cstdio>
 #include <string>
 
 namespace zrender {
 
-// Opens the plugin `fileName` (e.g. "libzrender_codecs.so"), found relative to the executable
-// only: in ../lib/zrender/ (an installed zrender: P/bin/zrender, P/lib/zrender/), then beside
-// it and in its parent folder (the build tree). Returns the dlopen handle, or null with the
-// reason in `error`.
-void* openPlugin(const std::string& fileName, std::string& error);
+// The object that the factory `factory` of the plugin `fileName` (e.g. "libzrender_codecs.so")
+// returns, the plugin found relative to the executable only: in ../lib/zrender/ (an installed
+// zrender: P/bin/zrender, P/lib/zrender/), then beside it and in its parent folder (the build
+// tree). It lives as long as the process. Throws std::runtime_error naming the file and why.
+void* pluginObject(const std::string& fileName, const char* factory);
 
-// The address of `symbol` in a plugin opened by openPlugin, or null.
-void* pluginSymbol(void* plugin, const char* symbol);
-
-// For the plugins' C interfaces: writes `text` on one line into `error`, at most `size` bytes.
-inline void setPluginError(char* error, size_t size, std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::snprintf(error, size, "%s", text.c_str());
+template <typename Interface>
+Interface& loadPlugin(const std::string& fileName, const char* factory) {
+  return *static_cast<Interface*>(pluginObject(fileName, factory));
 }
 
 }  // namespace zrender

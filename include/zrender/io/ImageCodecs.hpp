@@ -3,9 +3,9 @@
 // Image and video files. PNG, which every render writes, is encoded here (PngWriter), on
 // several threads when given them; libpng reads it. The other formats and video go through
 // OpenCV's imgcodecs and videoio, which live in a plugin (libzrender_codecs.so) loaded on first
-// use: on Debian those two libraries pull in about 200 shared libraries (GDAL, ffmpeg, ...)
-// whose loading alone costs more CPU per process than the whole render of the bunny
-// (docs/performance.md).
+// use (io/CodecPlugin.hpp): on Debian the plugin loads 244 shared libraries (GDAL, FFmpeg,
+// GStreamer, ...), which cost a process far more than the render of the bunny (docs/design.md,
+// Plugins).
 
 #include <cstdint>
 #include <filesystem>
@@ -37,6 +37,8 @@ inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 27;
 cv::Mat decodeColorImage(const std::filesystem::path& path, std::string& error);
 
 // A video file being written (.mp4: MPEG-4 part 2, .avi: Motion JPEG), 8-bit BGR frames.
+class VideoSink;
+
 class VideoFile {
  public:
   // Throws std::runtime_error when the codec plugin cannot be loaded; check isOpen().
@@ -44,12 +46,12 @@ class VideoFile {
   ~VideoFile();
   VideoFile(const VideoFile&) = delete;
   VideoFile& operator=(const VideoFile&) = delete;
-  bool isOpen() const { return handle_ != nullptr; }
+  bool isOpen() const { return sink_ != nullptr; }
   void write(const cv::Mat& frame);  // 8-bit BGR
   void close();                      // flushes and closes; the destructor does it too
 
  private:
-  void* handle_ = nullptr;
+  std::unique_ptr<VideoSink> sink_;
 };
 
 }  // namespace zrender

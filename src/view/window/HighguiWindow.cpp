@@ -1,69 +1,82 @@
-// libzrender_window.so: OpenCV's highgui window behind the C interface of WindowPlugin.h,
-// loaded by `zrender view` only (include/zrender/view/ViewWindow.hpp says why).
+// libzrender_window.so: OpenCV's highgui windows behind view/WindowPlugin.hpp, loaded by
+// `zrender view` only (include/zrender/view/ViewWindow.hpp says why).
 
 #include <X11/Xlib.h>
 
 #include <cstdlib>
+#include <memory>
 #include <string>
 
 #include <opencv2/core/mat.hpp>
 #include <opencv2/highgui.hpp>
 
-#include "zrender/base/Plugin.hpp"
-#include "zrender/view/WindowPlugin.h"
+#include "zrender/view/WindowPlugin.hpp"
 
-using zrender::setPluginError;
+namespace zrender {
 
-extern "C" {
+namespace {
 
-__attribute__((visibility("default"))) void* zrenderWindowOpen(const char* title, char* error,
-                                                               size_t size) {
-  // Qt aborts the process when it cannot reach the display, so the display is tried first.
-  Display* display = XOpenDisplay(nullptr);
-  if (!display) {
-    const char* name = std::getenv("DISPLAY");
-    setPluginError(error, size,
-                   std::string("no display: cannot open display '") + (name ? name : "") + "'");
-    return nullptr;
+// A window highgui cannot draw in any more is a closed one, which the next waitKey reports:
+// showing or closing it throws nothing.
+class HighguiWindow : public ViewWindow {
+ public:
+  explicit HighguiWindow(std::string title) : title_(std::move(title)) {}
+  ~HighguiWindow() override {
+    try {
+      cv::destroyWindow(title_);
+    } catch (const cv::Exception&) {
+    }
   }
-  XCloseDisplay(display);
-  try {
-    cv::namedWindow(title, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
-  } catch (const cv::Exception& e) {
-    setPluginError(error, size, "no GUI backend: " + e.msg);
-    return nullptr;
+  HighguiWindow(const HighguiWindow&) = delete;
+  HighguiWindow& operator=(const HighguiWindow&) = delete;
+
+  void show(const cv::Mat& image) override {
+    try {
+      cv::imshow(title_, image);
+    } catch (const cv::Exception&) {
+    }
   }
-  return new std::string(title);
+  int waitKey(int milliseconds) override {
+    try {
+      const int key = cv::waitKeyEx(milliseconds);
+      if (key != -1) return key;
+      if (cv::getWindowProperty(title_, cv::WND_PROP_VISIBLE) < 1) return kClosed;
+    } catch (const cv::Exception&) {
+      return kClosed;
+    }
+    return -1;
+  }
+
+ private:
+  std::string title_;
+};
+
+class Highgui : public WindowPlugin {
+ public:
+  std::unique_ptr<ViewWindow> open(const std::string& title, std::string& error) override {
+    // Qt aborts the process when it cannot reach the display, so the display is tried first.
+    Display* display = XOpenDisplay(nullptr);
+    if (!display) {
+      const char* name = std::getenv("DISPLAY");
+      error = std::string("no display: cannot open display '") + (name ? name : "") + "'";
+      return nullptr;
+    }
+    XCloseDisplay(display);
+    try {
+      cv::namedWindow(title, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
+    } catch (const cv::Exception& e) {
+      error = "no GUI backend: " + e.msg;
+      return nullptr;
+    }
+    return std::make_unique<HighguiWindow>(title);
+  }
+};
+
+}  // namespace
+
+}  // namespace zrender
+
+extern "C" __attribute__((visibility("default"))) void* zrenderWindowPlugin() {
+  static zrender::Highgui plugin;
+  return static_cast<zrender::WindowPlugin*>(&plugin);
 }
-
-// No exception crosses the C interface: a window highgui cannot draw in any more is a closed
-// one, which the next waitKey reports.
-__attribute__((visibility("default"))) void zrenderWindowShow(void* window, const cv::Mat* image) {
-  try {
-    cv::imshow(*static_cast<std::string*>(window), *image);
-  } catch (const cv::Exception&) {
-  }
-}
-
-__attribute__((visibility("default"))) int zrenderWindowWaitKey(void* window, int milliseconds) {
-  try {
-    const int key = cv::waitKeyEx(milliseconds);
-    if (key != -1) return key;
-    if (cv::getWindowProperty(*static_cast<std::string*>(window), cv::WND_PROP_VISIBLE) < 1)
-      return -2;
-  } catch (const cv::Exception&) {
-    return -2;
-  }
-  return -1;
-}
-
-__attribute__((visibility("default"))) void zrenderWindowClose(void* window) {
-  auto* name = static_cast<std::string*>(window);
-  try {
-    cv::destroyWindow(*name);
-  } catch (const cv::Exception&) {
-  }
-  delete name;
-}
-
-}  // extern "C"
