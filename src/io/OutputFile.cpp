@@ -197,11 +197,9 @@ void OutputFile::removeAll() {
 
 void checkWritable(const fs::path& path) {
   std::error_code ec;
-  if (!path.parent_path().empty()) fs::create_directories(path.parent_path(), ec);
-  if (ec) throw InputError(path.string() + ": cannot create folder: " + ec.message());
   if (fs::is_directory(path, ec))
     throw InputError(path.string() + ": cannot write file (a folder has that name)");
-  const OutputFile probe(path);
+  const OutputFile probe(path);  // makes the missing parent folders, as the write will
 }
 
 void checkDistinctOutputs(const std::vector<NamedOutput>& outputs) {
