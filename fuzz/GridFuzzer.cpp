@@ -16,7 +16,7 @@
 
 #include "FuzzSupport.hpp"
 #include "RenderCase.hpp"
-#include "zrender/io/SceneValidation.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 
 namespace {
 

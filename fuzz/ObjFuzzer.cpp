@@ -17,7 +17,7 @@
 
 #include "FuzzSupport.hpp"
 #include "support/TinyObjReference.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 namespace {
 

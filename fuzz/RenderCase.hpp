@@ -15,11 +15,11 @@
 #include <memory>
 #include <string>
 
-#include "zrender/io/SceneValidation.hpp"
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Scene.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 #include "zrender/scene/ShadingMode.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 

@@ -10,8 +10,8 @@
 
 #include "FuzzSupport.hpp"
 #include "RenderCase.hpp"
-#include "zrender/io/ObjLoader.hpp"
 #include "zrender/io/SceneFiles.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 namespace {
 

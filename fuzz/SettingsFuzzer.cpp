@@ -10,11 +10,11 @@
 #include <string>
 
 #include "FuzzSupport.hpp"
-#include "zrender/io/SceneValidation.hpp"
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Mesh.hpp"
 #include "zrender/scene/Scene.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 
 namespace {
 

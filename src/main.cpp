@@ -2,7 +2,7 @@
 
 #include "zrender/base/HeapPages.hpp"
 #include "zrender/cli/CommandLine.hpp"
-#include "zrender/io/InterruptCleanup.hpp"
+#include "zrender/io/files/InterruptCleanup.hpp"
 
 int main(int argc, char** argv) {
   zrender::useHugePagesForHeap();

@@ -12,11 +12,11 @@
 #include "zrender/base/Error.hpp"
 #include "zrender/cli/BenchCommand.hpp"
 #include "zrender/cli/Report.hpp"
-#include "zrender/io/Drawing.hpp"
-#include "zrender/io/ImageOutput.hpp"
-#include "zrender/io/OutputFile.hpp"
 #include "zrender/io/SceneFiles.hpp"
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/files/OutputFile.hpp"
+#include "zrender/io/images/Drawing.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
 #include "zrender/render/Renderer.hpp"
 
 namespace zrender {

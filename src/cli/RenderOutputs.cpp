@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/io/ImageOutput.hpp"
-#include "zrender/io/VideoContainer.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
+#include "zrender/io/images/VideoContainer.hpp"
 
 namespace zrender {
 

@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/io/SceneValidation.hpp"
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 
 namespace zrender {
 

@@ -5,10 +5,10 @@
 
 #include "zrender/base/Error.hpp"
 #include "zrender/cli/Report.hpp"
-#include "zrender/io/Drawing.hpp"
-#include "zrender/io/ImageOutput.hpp"
-#include "zrender/io/OutputFile.hpp"
 #include "zrender/io/SceneFiles.hpp"
+#include "zrender/io/files/OutputFile.hpp"
+#include "zrender/io/images/Drawing.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
 #include "zrender/view/ViewWindow.hpp"
 #include "zrender/view/Viewer.hpp"
 

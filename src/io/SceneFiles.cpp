@@ -4,8 +4,8 @@
 #include <string>
 
 #include "zrender/base/SideBySide.hpp"
-#include "zrender/io/ImageCodecs.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/raster/RasterRules.hpp"
 
 namespace zrender {

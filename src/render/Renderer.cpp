@@ -19,6 +19,40 @@ bool identicalFrames(const FrameBuffer& a, const cv::Mat& colorA, const FrameBuf
   return a == b && samePixels(colorA, colorB);
 }
 
+namespace {
+
+// Rows the algorithm reports are shaded at once, while their keys are still in cache. That
+// time is shading time, not the algorithm's; with several threads, each thread's share of it
+// counts (docs/design.md, Timings and JSON).
+class ShadingSink final : public RowSink {
+ public:
+  ShadingSink(Shader& shader, ShadingFrame& frame, const Threads& threads, double& shadeMs,
+              std::vector<double>& threadShadeMs)
+      : shader_(shader),
+        frame_(frame),
+        threads_(threads),
+        shadeMs_(shadeMs),
+        threadShadeMs_(threadShadeMs) {}
+
+  void facesGathered(const FaceParts& faces) override {
+    ScopedTimer shading(shadeMs_);
+    shader_.facesGathered(frame_, faces);
+  }
+  void rowsDone(int first, int end) override {
+    ScopedTimer shading(threads_.parallel() ? threadShadeMs_[size_t(threads_.slot())] : shadeMs_);
+    shader_.rowsDone(frame_, first, end);
+  }
+
+ private:
+  Shader& shader_;
+  ShadingFrame& frame_;
+  const Threads& threads_;
+  double& shadeMs_;
+  std::vector<double>& threadShadeMs_;
+};
+
+}  // namespace
+
 Renderer::Renderer(const Scene& scene, const std::string& algorithm, int threads)
     : Renderer(scene, makeAlgorithm(algorithm), nullptr, threads) {}
 
@@ -62,33 +96,16 @@ FrameTimings Renderer::renderFrame(const Camera& camera) {
     memory_.color.resize(camera.width, camera.height);  // the shader writes every pixel
     {
       ScopedTimer shading(shadeMs);
-      shader_.begin(buffer, camera, sampleScale_, memory_.color.image(),
-                    algorithm_->gathersFaces(threads_.parallel()) ? &geometry_ : nullptr);
+      shader_.begin(shading_, buffer, camera, sampleScale_, memory_.color.image(),
+                    algorithm_->gathersFaces(threads_.parallel()) ? &geometry_ : nullptr,
+                    &threads_);
     }
-    // Rows finished by the algorithm are shaded while their keys are still in cache; that time
-    // is shading time, not the algorithm's. With several threads, each thread's share of it
-    // counts (docs/design.md, Timings and JSON).
-    FrameInput input{scene_, camera, *source_, geometry_, nullptr, &threads_};
     std::fill(bandShadeMs_.begin(), bandShadeMs_.end(), 0.0);
-    if (threads_.parallel()) {
-      input.onFacesReady = [this, &shadeMs](const FaceParts& faces) {
-        ScopedTimer shading(shadeMs);
-        shader_.useFaces(faces);
-        shader_.prepareRows(threads_);
-      };
-      input.onRowsReady = [this](int first, int end) {
-        ScopedTimer shading(bandShadeMs_[size_t(threads_.slot())]);
-        shader_.rowsReady(first, end);
-      };
-    } else {
-      input.onRowsFinal = [this, &shadeMs](int rows) {
-        ScopedTimer shading(shadeMs);
-        shader_.rowsFinal(rows);
-      };
-    }
+    ShadingSink sink(shader_, shading_, threads_, shadeMs, bandShadeMs_);
+    FrameInput input{scene_, camera, *source_, geometry_, &threads_, &sink};
     algorithm_->render(input, buffer, stats_);
     ScopedTimer shading(shadeMs);
-    shader_.finish(threads_);
+    shader_.finish(shading_);
   }
   for (double ms : bandShadeMs_) shadeMs += ms / threads_.count();
   FrameTimings timings;

@@ -75,132 +75,131 @@ Shader::Shader(const Scene& scene, ShadingMode mode) : scene_(scene), mode_(mode
   packBgr_ = packBgr();
 }
 
-void Shader::begin(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color,
-                   const FrameGeometry* geometry) {
-  fb_ = &fb;
-  color_ = &color;
-  scale_ = scale;
-  shadedRows_ = 0;
+void Shader::begin(ShadingFrame& frame, const FrameBuffer& fb, const Camera& camera, int scale,
+                   cv::Mat& color, const FrameGeometry* geometry, const Threads* threads) {
+  frame.fb = &fb;
+  frame.color = &color;
+  frame.threads = threads;
+  frame.scale = scale;
+  frame.shadedRows = 0;
   color.create(fb.height() / scale, fb.width() / scale, CV_8UC3);
-  modelView_.clear();
+  frame.modelView.clear();
   for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
-    modelView_.push_back(camera.view * scene_.modelMatrix(k));
+    frame.modelView.push_back(camera.view * scene_.modelMatrix(k));
   // An id image's background is id 0, whatever the scene's background color.
   const auto& bg = scene_.settings.background;
-  background_ = mode_ == ShadingMode::Id
-                    ? 0
-                    : (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
-  faces_ = geometry ? FaceParts{geometry} : FaceParts();
-  if (faceColors_) faceColors_->begin(modelView_, background_, faces_);
-  if (surface_) surface_->begin(modelView_, camera, fb.width(), fb.height());
-  perFace_ = scale == 1 && faceColors_;
-  earlyShading_ = false;
-  rowDone_.assign(size_t(color.rows), 0);
+  frame.background = mode_ == ShadingMode::Id
+                         ? 0
+                         : (uint32_t(bg[0]) << 16) | (uint32_t(bg[1]) << 8) | uint32_t(bg[2]);
+  frame.faces = geometry ? FaceParts{geometry} : FaceParts();
+  if (faceColors_) faceColors_->begin(frame.modelView, frame.background, frame.faces);
+  if (surface_) surface_->begin(frame.modelView, camera, fb.width(), fb.height());
+  frame.perFace = scale == 1 && faceColors_;
+  frame.lookup = FaceColors::Lookup::OnSight;
+  frame.earlyShading = false;
+  frame.rowDone.assign(size_t(color.rows), 0);
 }
 
-void Shader::rowsFinal(int sampleRows) {
-  // Depth mode stretches over the depths of the whole frame: it waits for finish().
-  if (mode_ == ShadingMode::Depth) return;
-  shadePixelRows(std::min(sampleRows / scale_, color_->rows));
+void Shader::findDepthRange(ShadingFrame& frame) const {
+  // The range of each row of samples, then of them all: the same whatever the threads.
+  const FrameBuffer& fb = *frame.fb;
+  const size_t width = size_t(fb.width()), rows = size_t(fb.height());
+  std::vector<float> lo(rows, 1.0f), hi(rows, 0.0f);
+  const auto rangeOfRows = [&](size_t b, size_t e) {
+    for (size_t y = b; y < e; ++y) {
+      const DepthKey* row = fb.data() + y * width;
+      for (size_t x = 0; x < width; ++x) {
+        if (keyFaceId(row[x]) == kBackgroundId) continue;
+        const float d = keyDepth(row[x]);
+        lo[y] = std::min(lo[y], d);
+        hi[y] = std::max(hi[y], d);
+      }
+    }
+  };
+  if (frame.threads && frame.threads->parallel())
+    frame.threads->forRanges(rows, 16, rangeOfRows);
+  else
+    rangeOfRows(0, rows);
+  const float depthLo = rows ? *std::min_element(lo.begin(), lo.end()) : 1.0f;
+  const float depthHi = rows ? *std::max_element(hi.begin(), hi.end()) : 0.0f;
+  frame.depthLo = depthLo;
+  frame.depthRange = depthHi > depthLo ? double(depthHi) - depthLo : 1.0;
 }
 
-void Shader::findDepthRange(size_t begin, size_t end, float& lo, float& hi) const {
-  lo = 1.0f;
-  hi = 0.0f;
-  for (size_t i = begin; i < end; ++i) {
-    if (keyFaceId(fb_->data()[i]) == kBackgroundId) continue;
-    const float d = keyDepth(fb_->data()[i]);
-    lo = std::min(lo, d);
-    hi = std::max(hi, d);
-  }
-}
-
-void Shader::finish() {
-  if (mode_ == ShadingMode::Depth) {
-    float depthHi = 0.0f;
-    findDepthRange(0, fb_->size(), depthLo_, depthHi);
-    depthRange_ = depthHi > depthLo_ ? double(depthHi) - depthLo_ : 1.0;
-  }
-  shadePixelRows(color_->rows);
-}
-
-bool Shader::prepareFaces(const Threads& threads, bool bufferFinal) {
+bool Shader::prepareFaces(ShadingFrame& frame, bool bufferFinal) {
   if (mode_ == ShadingMode::Depth) return bufferFinal;  // the range of the whole frame
-  if (faceColors_) lookup_ = faceColors_->prepare(fb_->size(), &threads);
+  const Threads& threads = *frame.threads;
+  const size_t samples = frame.fb->size();
+  if (faceColors_) frame.lookup = faceColors_->prepare(samples, &threads);
   if (surface_) {
-    if (faces_.empty() ? surface_->setUpAll(fb_->size())
-                       : surface_->setUpFaces(faces_, fb_->size()))
+    if (frame.faces.empty() ? surface_->setUpAll(samples)
+                            : surface_->setUpFaces(frame.faces, samples))
       return true;
     if (!bufferFinal) return false;
-    surface_->setUpVisible(*fb_, faces_, threads);
+    surface_->setUpVisible(*frame.fb, frame.faces, threads);
   }
   return true;
 }
 
-void Shader::useFaces(const FaceParts& faces) {
-  faces_ = faces;
-  if (faceColors_) faceColors_->begin(modelView_, background_, faces_);
+void Shader::facesGathered(ShadingFrame& frame, const FaceParts& faces) {
+  if (!(frame.threads && frame.threads->parallel())) return;  // faces are colored on sight
+  frame.faces = faces;
+  if (faceColors_) faceColors_->begin(frame.modelView, frame.background, frame.faces);
+  frame.earlyShading = prepareFaces(frame, false);
 }
 
-void Shader::prepareRows(const Threads& threads) {
-  earlyShading_ = prepareFaces(threads, false);
-}
-
-void Shader::rowsReady(int first, int end) {
-  if (!earlyShading_) return;
-  const int firstRow = (first + scale_ - 1) / scale_, endRow = std::min(end / scale_, color_->rows);
-  if (firstRow >= endRow) return;
-  std::vector<uint32_t> rowColors;
-  paintRows(firstRow, endRow, rowColors, true);
-  std::fill(rowDone_.begin() + firstRow, rowDone_.begin() + endRow, uint8_t(1));
-}
-
-void Shader::finish(const Threads& threads) {
-  if (!threads.parallel()) {
-    finish();
+void Shader::rowsDone(ShadingFrame& frame, int first, int end) {
+  const int scale = frame.scale, rows = frame.color->rows;
+  if (!(frame.threads && frame.threads->parallel())) {
+    // Depth mode stretches over the depths of the whole frame: it waits for finish().
+    if (mode_ != ShadingMode::Depth) shadePixelRows(frame, std::min(end / scale, rows));
     return;
   }
-  if (mode_ == ShadingMode::Depth) {
-    // The range of each row of samples, then of them all: the same whatever the threads.
-    const size_t width = size_t(fb_->width()), rows = size_t(fb_->height());
-    std::vector<float> lo(rows), hi(rows);
-    threads.forRanges(rows, 16, [&](size_t b, size_t e) {
-      for (size_t y = b; y < e; ++y) findDepthRange(y * width, (y + 1) * width, lo[y], hi[y]);
-    });
-    depthLo_ = *std::min_element(lo.begin(), lo.end());
-    const float depthHi = *std::max_element(hi.begin(), hi.end());
-    depthRange_ = depthHi > depthLo_ ? double(depthHi) - depthLo_ : 1.0;
+  if (!frame.earlyShading) return;
+  const int firstRow = (first + scale - 1) / scale, endRow = std::min(end / scale, rows);
+  if (firstRow >= endRow) return;
+  std::vector<uint32_t> rowColors;
+  paintRows(frame, firstRow, endRow, rowColors, true);
+  std::fill(frame.rowDone.begin() + firstRow, frame.rowDone.begin() + endRow, uint8_t(1));
+}
+
+void Shader::finish(ShadingFrame& frame) {
+  if (mode_ == ShadingMode::Depth) findDepthRange(frame);
+  if (!(frame.threads && frame.threads->parallel())) {
+    shadePixelRows(frame, frame.color->rows);
+    return;
   }
   // Every face that can be in the buffer is set up before the rows are shared out, so that
   // coloring them writes nothing but the image.
-  prepareFaces(threads, true);
-  threads.forRanges(rowDone_.size(), 8, [&](size_t b, size_t e) {
+  prepareFaces(frame, true);
+  frame.threads->forRanges(frame.rowDone.size(), 8, [&](size_t b, size_t e) {
     std::vector<uint32_t> rowColors;
     for (size_t y = b; y < e; ++y)
-      if (!rowDone_[y]) paintRows(int(y), int(y) + 1, rowColors, true);
+      if (!frame.rowDone[y]) paintRows(frame, int(y), int(y) + 1, rowColors, true);
   });
-  shadedRows_ = color_->rows;
+  frame.shadedRows = frame.color->rows;
 }
 
 void Shader::shade(const FrameBuffer& fb, const Camera& camera, int scale, cv::Mat& color) {
-  begin(fb, camera, scale, color);
-  finish();
+  ShadingFrame frame;
+  begin(frame, fb, camera, scale, color, nullptr);
+  finish(frame);
 }
 
-uint32_t Shader::sampleColor(DepthKey key, bool shared) {
+uint32_t Shader::sampleColor(const ShadingFrame& frame, DepthKey key, bool shared) {
   const uint32_t id = keyFaceId(key);
-  if (id == kBackgroundId) return background_;
+  if (id == kBackgroundId) return frame.background;
   if (mode_ == ShadingMode::Depth) {
     // Near white, far black, stretched over the depths present in the frame.
-    const double g = 1.0 - (double(keyDepth(key)) - depthLo_) / depthRange_;
+    const double g = 1.0 - (double(keyDepth(key)) - frame.depthLo) / frame.depthRange;
     return packRgb(g, g, g);
   }
-  return shared ? sharedFaceColor(id) : faceColors_->color(id);
+  return shared ? sharedFaceColor(frame, id) : faceColors_->color(id);
 }
 
-uint32_t Shader::sharedFaceColor(uint32_t id) const {
+uint32_t Shader::sharedFaceColor(const ShadingFrame& frame, uint32_t id) const {
   const uint32_t* table = faceColors_->table();
-  switch (lookup_) {
+  switch (frame.lookup) {
     case FaceColors::Lookup::ById:
       return table[size_t(id) + 1];
     case FaceColors::Lookup::ByMeshFace:
@@ -210,42 +209,44 @@ uint32_t Shader::sharedFaceColor(uint32_t id) const {
   }
 }
 
-void Shader::colorSampleRow(int y, uint32_t* out, bool shared) {
-  const DepthKey* row = fb_->row(y);
-  const int width = fb_->width();
+void Shader::colorSampleRow(const ShadingFrame& frame, int y, uint32_t* out, bool shared) {
+  const DepthKey* row = frame.fb->row(y);
+  const int width = frame.fb->width();
   if (!surface_) {
-    for (int x = 0; x < width; ++x) out[x] = sampleColor(row[x], shared);
+    for (int x = 0; x < width; ++x) out[x] = sampleColor(frame, row[x], shared);
     return;
   }
-  surfaceRow_(*surface_, row, width, y, background_, out);
+  surfaceRow_(*surface_, row, width, y, frame.background, out);
 }
 
-void Shader::shadePixelRows(int endRow) {
-  const int firstRow = shadedRows_;
+void Shader::shadePixelRows(ShadingFrame& frame, int endRow) {
+  const int firstRow = frame.shadedRows;
   if (endRow <= firstRow) return;
-  shadedRows_ = endRow;
-  if (perFace_) lookup_ = faceColors_->prepare(fb_->size());
-  if (surface_ && !faces_.empty()) surface_->setUpFaces(faces_, fb_->size());
-  paintRows(firstRow, endRow, rowColors_, false);
+  frame.shadedRows = endRow;
+  if (frame.perFace) frame.lookup = faceColors_->prepare(frame.fb->size());
+  if (surface_ && !frame.faces.empty()) surface_->setUpFaces(frame.faces, frame.fb->size());
+  paintRows(frame, firstRow, endRow, frame.rowColors, false);
 }
 
-void Shader::paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColors, bool shared) {
-  const FrameBuffer& fb = *fb_;
-  cv::Mat& color = *color_;
-  if (perFace_) {
+void Shader::paintRows(const ShadingFrame& frame, int firstRow, int endRow,
+                       std::vector<uint32_t>& rowColors, bool shared) {
+  const FrameBuffer& fb = *frame.fb;
+  cv::Mat& color = *frame.color;
+  const uint32_t background = frame.background;
+  if (frame.perFace) {
     const uint32_t* table = faceColors_->table();
-    if (lookup_ == FaceColors::Lookup::ById) {
-      shadeRows(fb, firstRow, endRow, background_, color,
+    if (frame.lookup == FaceColors::Lookup::ById) {
+      shadeRows(fb, firstRow, endRow, background, color,
                 [table](DepthKey key) { return table[uint32_t(keyFaceId(key) + 1u)]; });
-    } else if (lookup_ == FaceColors::Lookup::ByMeshFace) {
+    } else if (frame.lookup == FaceColors::Lookup::ByMeshFace) {
       const uint32_t meshFaces = uint32_t(scene_.mesh->faceCount());
-      shadeFaceRuns(fb, firstRow, endRow, background_, color,
+      shadeFaceRuns(fb, firstRow, endRow, background, color,
                     [&](uint32_t id) { return table[id % meshFaces]; });
     } else if (shared) {
-      shadeFaceRuns(fb, firstRow, endRow, background_, color,
+      shadeFaceRuns(fb, firstRow, endRow, background, color,
                     [&](uint32_t id) { return faceColors_->uncachedColor(id); });
     } else {
-      shadeFaceRuns(fb, firstRow, endRow, background_, color,
+      shadeFaceRuns(fb, firstRow, endRow, background, color,
                     [&](uint32_t id) { return faceColors_->color(id); });
     }
     return;
@@ -257,10 +258,10 @@ void Shader::paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColor
   uint32_t* colors1 = colors0 + fb.width() + 16;
   for (int y = firstRow; y < endRow; ++y) {
     uint8_t* out = color.ptr(y);
-    if (scale_ == 1 && surface_ && surfaceBgrRow_) {
-      surfaceBgrRow_(*surface_, fb.row(y), fb.width(), y, background_, out);
-    } else if (scale_ == 1) {
-      colorSampleRow(y, colors0, shared);
+    if (frame.scale == 1 && surface_ && surfaceBgrRow_) {
+      surfaceBgrRow_(*surface_, fb.row(y), fb.width(), y, background, out);
+    } else if (frame.scale == 1) {
+      colorSampleRow(frame, y, colors0, shared);
       packBgr_(colors0, width, out);
     } else if (mode_ == ShadingMode::Id) {
       // A mean of ids is no face's id: an id image holds each pixel's nearest sample, as
@@ -269,15 +270,15 @@ void Shader::paintRows(int firstRow, int endRow, std::vector<uint32_t>& rowColor
       const DepthKey* r0 = fb.row(2 * y);
       const DepthKey* r1 = fb.row(2 * y + 1);
       for (int x = 0; x < width; ++x) {
-        const uint32_t c =
-            sampleColor(std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}), shared);
+        const uint32_t c = sampleColor(
+            frame, std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]}), shared);
         out[3 * x + 0] = uint8_t(c);
         out[3 * x + 1] = uint8_t(c >> 8);
         out[3 * x + 2] = uint8_t(c >> 16);
       }
     } else {
-      colorSampleRow(2 * y, colors0, shared);
-      colorSampleRow(2 * y + 1, colors1, shared);
+      colorSampleRow(frame, 2 * y, colors0, shared);
+      colorSampleRow(frame, 2 * y + 1, colors1, shared);
       for (int x = 0; x < width; ++x) {
         const uint32_t cs[4] = {colors0[2 * x], colors0[2 * x + 1], colors1[2 * x],
                                 colors1[2 * x + 1]};

@@ -5,8 +5,8 @@
 
 #include "zrender/base/Clock.hpp"
 #include "zrender/base/Error.hpp"
-#include "zrender/io/Drawing.hpp"
-#include "zrender/io/ImageOutput.hpp"
+#include "zrender/io/images/Drawing.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
 #include "zrender/view/FrameCommand.hpp"
 #include "zrender/view/ViewFigures.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "zrender/raster/RowBands.hpp"
 #include "zrender/raster/TriangleFill.hpp"
-#include "zrender/scene/ScreenRows.hpp"
+#include "zrender/transform/ScreenRows.hpp"
 
 namespace zrender {
 
@@ -130,7 +130,7 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
       const int bandTop = band << TriangleBands::kBandShift;
       if (last && bandTop > 0) {
         rasterizer_.finishRows(bandTop);
-        input.rowsFinal(bandTop);
+        input.rowsDone(bandTop - (1 << TriangleBands::kBandShift), bandTop);
       }
       for (uint32_t t = bands_.bandStart(band); t < bands_.bandStart(band + 1); ++t)
         rasterizer_.drawTriangle(triangles[t], stats);
@@ -193,11 +193,11 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
   // The parts hold every face that can be in the buffer: the shader prepares them, then the
   // bands draw the last instance and are finished and shaded, each by the thread that drew it,
   // while its keys are in that thread's cache.
-  input.facesReady(faces);
+  input.facesGathered(faces);
   bandOrder_.forEachBand(threads, bands, [&](size_t b) {
     if (!instances_.empty()) drawBand(b);
     bandRasterizers_[b].finish();
-    input.rowsReady(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
+    input.rowsDone(bands.rowBegin(int(b)), bands.rowEnd(int(b)));
   });
   for (const RenderStats& s : bandStats_) stats += s;
   stats.trianglesHzbCulled += g.counters.filtered;

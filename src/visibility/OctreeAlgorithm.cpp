@@ -9,7 +9,7 @@
 
 #include "zrender/raster/RasterRules.hpp"
 #include "zrender/raster/RowBands.hpp"
-#include "zrender/scene/ScreenRows.hpp"
+#include "zrender/transform/ScreenRows.hpp"
 
 namespace zrender {
 
@@ -94,7 +94,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
   // The bands' leaves are pulled into geometry of their own, never the frame's; the shader's
   // face colors, which need none, are prepared now, so that each band is shaded by the thread
   // that finishes it, while its keys are in cache (surfaces wait for the whole buffer).
-  input.facesReady({});
+  input.facesGathered({});
   bandOrder_.forEachBand(threads, rows, [&](size_t b) {
     Band& band = bands_[b];
     const int rowBegin = rows.rowBegin(int(b)), rowEnd = rows.rowEnd(int(b));
@@ -122,7 +122,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
               [&](size_t k) -> const ScreenTriangle& { return t[kept[k]]; }, band.stats);
         });
     band.rasterizer.finish();
-    input.rowsReady(rowBegin, rowEnd);
+    input.rowsDone(rowBegin, rowEnd);
   });
   for (const Band& band : bands_) {
     stats += band.stats;

@@ -30,7 +30,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     const int bandTop = band << TriangleBands::kBandShift;
     if (bandTop > 0) {
       clearRowsUpTo(bandTop - 1);
-      input.rowsFinal(bandTop);
+      input.rowsDone(bandTop - (1 << TriangleBands::kBandShift), bandTop);
     }
     for (uint32_t i = bands_.bandStart(band); i < bands_.bandStart(band + 1); ++i) {
       const ScreenTriangle& t = triangles[i];
@@ -46,7 +46,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
 void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const Threads& threads = *input.threads;
   input.source.pullAllParts(input.geometry, parts_);
-  input.facesReady(parts_);
+  input.facesGathered(parts_);
   const int width = fb.width(), height = fb.height();
   const GeometryVector<ScreenTriangle>& triangles = bands_.bin(parts_, width, height, threads);
   // Each band is cleared and drawn by one thread, its triangles clipped to its rows; a
@@ -67,7 +67,7 @@ void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderSta
       s.trianglesRasterized += TriangleBands::firstBandOf(t, band);
       fill(setup, t.plane, t.id, fb, s);
     }
-    input.rowsReady(top, bottom);
+    input.rowsDone(top, bottom);
   });
   for (const RenderStats& s : bandStats_) stats += s;
 }

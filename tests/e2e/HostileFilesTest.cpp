@@ -14,7 +14,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "support/HostileRuns.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {

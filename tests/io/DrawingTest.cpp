@@ -11,7 +11,7 @@
 #include <opencv2/core/mat.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "zrender/io/Drawing.hpp"
+#include "zrender/io/images/Drawing.hpp"
 
 namespace zrender {
 namespace {

@@ -12,7 +12,7 @@
 
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
-#include "zrender/io/FileText.hpp"
+#include "zrender/io/files/FileText.hpp"
 
 namespace zrender {
 namespace {

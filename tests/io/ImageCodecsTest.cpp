@@ -11,7 +11,7 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "support/TestSupport.hpp"
-#include "zrender/io/ImageCodecs.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
 
 namespace zrender {
 namespace {

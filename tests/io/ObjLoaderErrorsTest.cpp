@@ -12,7 +12,7 @@
 #include "support/ObjLoaderFixture.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/scene/Mesh.hpp"
 
 namespace zrender {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "support/ObjLoaderFixture.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/scene/Mesh.hpp"
 
 namespace zrender {

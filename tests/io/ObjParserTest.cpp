@@ -17,7 +17,7 @@
 #include "support/TestSupport.hpp"
 #include "support/TinyObjReference.hpp"
 #include "zrender/base/Threads.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 namespace zrender {
 namespace {

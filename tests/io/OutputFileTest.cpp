@@ -15,8 +15,8 @@
 
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
-#include "zrender/io/ImageOutput.hpp"
-#include "zrender/io/OutputFile.hpp"
+#include "zrender/io/files/OutputFile.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
 
 namespace zrender {
 namespace {

@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "zrender/io/PngRows.hpp"
+#include "zrender/io/images/PngRows.hpp"
 
 namespace zrender {
 namespace {

@@ -21,9 +21,9 @@
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
 #include "zrender/base/Threads.hpp"
-#include "zrender/io/ImageCodecs.hpp"
-#include "zrender/io/ImageOutput.hpp"
-#include "zrender/io/PngWriter.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
+#include "zrender/io/images/PngWriter.hpp"
 
 namespace zrender {
 namespace {

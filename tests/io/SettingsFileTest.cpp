@@ -12,8 +12,8 @@
 
 #include "support/SettingsParsing.hpp"
 #include "zrender/base/Error.hpp"
-#include "zrender/io/SceneValidation.hpp"
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 
 namespace zrender {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "support/TestSupport.hpp"
-#include "zrender/io/ImageOutput.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/shading/Shader.hpp"
@@ -18,7 +18,7 @@ namespace zrender {
 namespace {
 
 TEST(Shader, RowsShadedAsTheyBecomeFinalEqualOneShadingAfterTheFrame) {
-  // The row-ordered algorithms have rows shaded band by band while they render (rowsFinal),
+  // The row-ordered algorithms have rows shaded band by band while they render (RowSink::rowsDone),
   // and the renderer computes colors only for the faces of the frame's geometry (the octree's
   // grows as it goes); the result must be the frame shaded in one pass afterwards, for every
   // mode, with and without MSAA, on a scene tall enough for many bands (100 rows: 3 bands + a

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "../fuzz/RenderCase.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 namespace zrender::test {
 

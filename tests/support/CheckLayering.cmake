@@ -23,7 +23,7 @@ set(users_zlib io)
 set(users_isa-l io)
 # OpenCV's heavy modules: only in the plugins' sources, which the program loads when it needs
 # them (docs/design.md, Plugins).
-set(plugin_sources src/io/codecs/ src/view/window/)
+set(plugin_sources src/io/images/codecs/ src/view/window/)
 
 file(GLOB_RECURSE files ${ROOT}/src/*.cpp ${ROOT}/src/*.hpp ${ROOT}/include/zrender/*.hpp
      ${ROOT}/include/zrender/*.h)

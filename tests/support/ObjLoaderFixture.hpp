@@ -13,7 +13,7 @@
 #include <string>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/scene/Mesh.hpp"
 
 namespace zrender::test {

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
-#include "zrender/io/SceneValidation.hpp"
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 
 namespace zrender::test {
 

@@ -15,7 +15,7 @@
 #include <sstream>
 #include <thread>
 
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 namespace zrender::test {
 

@@ -11,13 +11,13 @@
 
 #include <opencv2/core/mat.hpp>
 
-#include "zrender/io/SceneValidation.hpp"
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
 #include "zrender/scene/Mesh.hpp"
 #include "zrender/scene/Scene.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 #include "zrender/transform/GeometrySource.hpp"
 
 namespace zrender::test {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "zrender/io/ObjScanner.hpp"
+#include "zrender/io/obj/ObjScanner.hpp"
 
 namespace zrender::test {
 

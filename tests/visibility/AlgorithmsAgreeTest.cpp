@@ -18,7 +18,7 @@
 #include "support/AlgorithmAgreement.hpp"
 #include "support/TestMeshes.hpp"
 #include "support/TestSupport.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/scene/ShadingMode.hpp"
 
 namespace zrender {

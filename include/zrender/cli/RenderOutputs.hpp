@@ -7,8 +7,8 @@
 #include <opencv2/core/mat.hpp>
 
 #include "zrender/cli/RenderCommand.hpp"
-#include "zrender/io/ImageCodecs.hpp"
-#include "zrender/io/OutputFile.hpp"
+#include "zrender/io/files/OutputFile.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
 
 namespace zrender {
 

@@ -72,6 +72,7 @@ class Renderer {
   Threads threads_;
   std::unique_ptr<VisibilityAlgorithm> algorithm_;
   Shader shader_;
+  ShadingFrame shading_;
   int sampleScale_;
   double prepareMs_ = 0.0;
   std::unique_ptr<FaceTransformer> transformer_;

@@ -24,7 +24,7 @@ class PolygonBands {
             const DrawBand& drawBand) {
     const Threads& threads = *input.threads;
     input.source.pullAllParts(input.geometry, parts_);
-    input.facesReady(parts_);
+    input.facesGathered(parts_);
     const RowBands bands(height, threads.count() * kBandsPerThread);
     std::vector<size_t> faceCounts;
     for (const FrameGeometry* part : parts_) faceCounts.push_back(part->faces.size());
@@ -50,7 +50,7 @@ class PolygonBands {
                    placer_.start(int(b) + 1) - first);
       bandStats_[b].trianglesRasterized += tables.triangleCount;
       drawBand(thread, rowEnd, bandStats_[b]);
-      input.rowsReady(rowBegin, rowEnd);
+      input.rowsDone(rowBegin, rowEnd);
     });
     for (const RenderStats& s : bandStats_) stats += s;
   }

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +14,24 @@
 
 namespace zrender {
 
+// Where an algorithm reports its progress through a frame, so that finished rows are shaded
+// while their keys are still in cache instead of read back from memory afterwards
+// (docs/design.md, The algorithms). An algorithm need not report anything: rows it does not report
+// are shaded after it.
+class RowSink {
+ public:
+  virtual ~RowSink() = default;
+  // With several threads, from the thread that called render() and before rowsDone(): the
+  // parts that hold every face that may be in the buffer (empty: the faces are not gathered),
+  // so that their colors are prepared ahead. With several threads, rows are shaded early only
+  // after this call.
+  virtual void facesGathered(const FaceParts& faces) = 0;
+  // Sample rows [first, end) hold their final keys. With one thread, top to bottom, each call's
+  // `first` the previous one's `end` (from 0); with several, from any thread, the rows of
+  // different calls never overlapping.
+  virtual void rowsDone(int first, int end) = 0;
+};
+
 // What an algorithm gets for one frame.
 struct FrameInput {
   const Scene& scene;
@@ -25,39 +42,24 @@ struct FrameInput {
   // triangles it has drawn (the octree does, leaf by leaf).
   GeometrySource& source;
   FrameGeometry& geometry;
-  // Called by algorithms that finish rows in order (top to bottom), with n when sample rows
-  // [0, n) hold their final keys, so that they are shaded while still in cache instead of
-  // read back from memory afterwards. Optional both ways: may be empty, and an algorithm need
-  // not call it.
-  std::function<void(int)> onRowsFinal = nullptr;
   // The threads the algorithm may use (null: one). With more than one, it renders in
-  // parallel however suits it, filling the same buffer as with one (docs/design.md, Threads),
-  // and calls rowsReady() instead of rowsFinal(); rows it does not report are shaded after it.
+  // parallel however suits it, filling the same buffer as with one (docs/design.md, Threads).
   const Threads* threads = nullptr;
-  // With several threads: sample rows [first, end) hold their final keys, so that they are
-  // shaded by the thread that drew them while still in its cache. Any thread may call it; the
-  // rows of different calls never overlap. May be empty. Rows are shaded then only if the
-  // algorithm said before, from the thread that called render(), where the frame's faces are
-  // (onFacesReady), so that their colors are prepared ahead.
-  std::function<void(int, int)> onRowsReady = nullptr;
-  // The argument: the parts that hold every face of the frame, valid until the frame's end
-  // (empty: the faces are not gathered).
-  std::function<void(const FaceParts&)> onFacesReady = nullptr;
+  // Where finished rows go; null: nowhere.
+  RowSink* rows = nullptr;
 
   bool parallel() const { return threads != nullptr && threads->parallel(); }
-  void rowsReady(int first, int end) const {
-    if (onRowsReady) onRowsReady(first, end);
+  void facesGathered(const FaceParts& parts) const {
+    if (rows) rows->facesGathered(parts);
   }
-  void facesReady(const FaceParts& parts) const {
-    if (onFacesReady) onFacesReady(parts);
+  void rowsDone(int first, int end) const {
+    if (rows) rows->rowsDone(first, end);
   }
-  void rowsFinal(int rows) const {
-    if (onRowsFinal) onRowsFinal(rows);
-  }
-  // For algorithms that finish one row at a time: reports rows 32 at a time (a call per row
-  // would cost more than it saves).
+  // For algorithms that finish one row at a time: with one thread, reports rows 32 at a time
+  // (a call per row would cost more than it saves); with several, nothing (a band's rows are
+  // reported when the band is done, and rows above it may not be).
   void rowFinished(int y) const {
-    if (((y + 1) & 31) == 0) rowsFinal(y + 1);
+    if (!parallel() && ((y + 1) & 31) == 0) rowsDone(y - 31, y + 1);
   }
 };
 

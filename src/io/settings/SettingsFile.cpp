@@ -1,4 +1,4 @@
-#include "zrender/io/SettingsFile.hpp"
+#include "zrender/io/settings/SettingsFile.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -15,8 +15,8 @@
 
 #include <json/json.h>
 
-#include "zrender/io/SceneValidation.hpp"
-#include "zrender/io/SettingsMessages.hpp"
+#include "zrender/scene/SceneValidation.hpp"
+#include "zrender/scene/SettingsMessages.hpp"
 
 namespace zrender {
 

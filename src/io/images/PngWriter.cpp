@@ -1,4 +1,4 @@
-#include "zrender/io/PngWriter.hpp"
+#include "zrender/io/images/PngWriter.hpp"
 
 #include <isa-l/crc.h>
 #include <isa-l/igzip_lib.h>
@@ -13,7 +13,7 @@
 #include "zrender/base/InOrderPipeline.hpp"
 #include "zrender/base/Threads.hpp"
 #include "zrender/base/UninitializedAllocator.hpp"
-#include "zrender/io/PngRows.hpp"
+#include "zrender/io/images/PngRows.hpp"
 
 namespace zrender {
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "support/TestSupport.hpp"
-#include "zrender/scene/ScreenRows.hpp"
+#include "zrender/transform/ScreenRows.hpp"
 
 namespace zrender {
 namespace {

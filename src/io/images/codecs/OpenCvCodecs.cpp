@@ -12,8 +12,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/videoio.hpp>
 
-#include "zrender/io/CodecPlugin.hpp"
-#include "zrender/io/ImageCodecs.hpp"
+#include "zrender/io/images/CodecPlugin.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
 
 namespace zrender {
 

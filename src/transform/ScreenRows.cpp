@@ -1,4 +1,4 @@
-#include "zrender/scene/ScreenRows.hpp"
+#include "zrender/transform/ScreenRows.hpp"
 
 #include <algorithm>
 #include <cmath>

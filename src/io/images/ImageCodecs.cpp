@@ -1,4 +1,4 @@
-#include "zrender/io/ImageCodecs.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
 
 #include <png.h>
 #include <stdlib.h>
@@ -13,8 +13,8 @@
 
 #include "zrender/base/Plugin.hpp"
 #include "zrender/base/Threads.hpp"
-#include "zrender/io/CodecPlugin.hpp"
-#include "zrender/io/PngWriter.hpp"
+#include "zrender/io/images/CodecPlugin.hpp"
+#include "zrender/io/images/PngWriter.hpp"
 
 namespace zrender {
 

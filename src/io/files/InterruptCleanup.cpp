@@ -1,4 +1,4 @@
-#include "zrender/io/InterruptCleanup.hpp"
+#include "zrender/io/files/InterruptCleanup.hpp"
 
 #include <pthread.h>
 #include <signal.h>

@@ -1,10 +1,10 @@
-#include "zrender/io/VideoContainer.hpp"
+#include "zrender/io/images/VideoContainer.hpp"
 
 #include <cstdint>
 #include <fstream>
 #include <set>
 
-#include "zrender/io/ImageCodecs.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
 
 namespace zrender {
 

@@ -1,4 +1,4 @@
-#include "zrender/io/OutputFile.hpp"
+#include "zrender/io/files/OutputFile.hpp"
 
 #include <fcntl.h>
 #include <sys/random.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-// What libzrender_codecs.so (src/io/codecs/OpenCvCodecs.cpp) gives: OpenCV's imgcodecs and
+// What libzrender_codecs.so (src/io/images/codecs/OpenCvCodecs.cpp) gives: OpenCV's imgcodecs and
 // videoio, loaded by the first image file other than PNG or the first video
 // (io/ImageCodecs.hpp; base/Plugin.hpp). Its factory: zrenderCodecPlugin.
 

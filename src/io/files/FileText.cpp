@@ -1,4 +1,4 @@
-#include "zrender/io/FileText.hpp"
+#include "zrender/io/files/FileText.hpp"
 
 #include <fcntl.h>
 #include <sys/mman.h>

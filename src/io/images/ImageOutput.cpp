@@ -1,4 +1,4 @@
-#include "zrender/io/ImageOutput.hpp"
+#include "zrender/io/images/ImageOutput.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -10,9 +10,9 @@
 
 #include "zrender/base/Error.hpp"
 #include "zrender/base/Threads.hpp"
-#include "zrender/io/ImageCodecs.hpp"
-#include "zrender/io/OutputFile.hpp"
-#include "zrender/io/PngWriter.hpp"
+#include "zrender/io/files/OutputFile.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
+#include "zrender/io/images/PngWriter.hpp"
 
 namespace zrender {
 

@@ -1,4 +1,4 @@
-#include "zrender/io/ObjLexer.hpp"
+#include "zrender/io/obj/ObjLexer.hpp"
 
 #include <cctype>
 

@@ -1,4 +1,4 @@
-#include "zrender/io/Drawing.hpp"
+#include "zrender/io/images/Drawing.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "zrender/io/SceneValidation.hpp"
+#include "zrender/scene/SceneValidation.hpp"
 
 #include <cmath>
 
-#include "zrender/io/SettingsMessages.hpp"
+#include "zrender/scene/SettingsMessages.hpp"
 #include "zrender/scene/Transforms.hpp"
 
 namespace zrender {

@@ -1,4 +1,4 @@
-#include "zrender/io/ObjParser.hpp"
+#include "zrender/io/obj/ObjParser.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -9,8 +9,8 @@
 #include <limits>
 #include <string>
 
-#include "zrender/io/ObjLexer.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLexer.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 namespace zrender {
 

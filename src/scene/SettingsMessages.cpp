@@ -1,4 +1,4 @@
-#include "zrender/io/SettingsMessages.hpp"
+#include "zrender/scene/SettingsMessages.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "zrender/io/PngRows.hpp"
+#include "zrender/io/images/PngRows.hpp"
 
 #include <immintrin.h>
 

@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "zrender/io/ObjLexer.hpp"
+#include "zrender/io/obj/ObjLexer.hpp"
 
 namespace zrender {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "zrender/io/InterruptCleanup.hpp"
+#include "zrender/io/files/InterruptCleanup.hpp"
 
 namespace zrender {
 

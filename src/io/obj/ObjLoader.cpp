@@ -1,4 +1,4 @@
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 #include <cstdint>
 #include <fstream>
@@ -16,9 +16,9 @@
 
 #include <tiny_obj_loader.h>
 
-#include "zrender/io/FileText.hpp"
-#include "zrender/io/ObjParser.hpp"
-#include "zrender/io/ObjScanner.hpp"
+#include "zrender/io/files/FileText.hpp"
+#include "zrender/io/obj/ObjParser.hpp"
+#include "zrender/io/obj/ObjScanner.hpp"
 
 namespace zrender {
 

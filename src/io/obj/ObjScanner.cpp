@@ -1,4 +1,4 @@
-#include "zrender/io/ObjScanner.hpp"
+#include "zrender/io/obj/ObjScanner.hpp"
 
 #include <cstdint>
 #include <cstdio>
@@ -6,8 +6,8 @@
 #include <string>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/io/ObjLexer.hpp"
-#include "zrender/io/ObjLoader.hpp"
+#include "zrender/io/obj/ObjLexer.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
 
 namespace zrender {
 
