@@ -40,14 +40,13 @@ void FaceTransformer::beginFrame(const Camera& camera) {
     for (Worker& w : workers_) {
       w.assembler.beginFrame(camera.width, camera.height, layout_.slotPositions(), mvp_);
       w.batchMs = 0.0;
-      w.sideMs = 0.0;
     }
   }
 }
 
 double FaceTransformer::transformMs() const {
   double ms = transformMs_;
-  for (const Worker& w : workers_) ms += (w.batchMs - w.sideMs) / double(workers_.size());
+  for (const Worker& w : workers_) ms += w.batchMs / double(workers_.size());
   return ms;
 }
 
@@ -56,12 +55,37 @@ InstanceView FaceTransformer::viewOfInstance(uint32_t instance) const {
   return zrender::viewOfInstance(mvp_[instance], layout_.bounds(), viewport_);
 }
 
-void FaceTransformer::pullAll(FrameGeometry& out) {
-  if (threads_ && threads_->parallel()) {
-    pullParallel(-1, out, nullptr);
+void FaceTransformer::pull(const FaceRequest& request, FrameGeometry& out,
+                           std::vector<FrameGeometry>* parts) {
+  if (request.scope == FaceRequest::Scope::Batch) {
+    pullBatch(request.index, out);
     return;
   }
-  for (uint32_t k = 0; k < scene_.instanceCount(); ++k) pullInstance(k, out);
+  const bool instance = request.scope == FaceRequest::Scope::Instance;
+  if (threads_ && threads_->parallel()) {
+    pullParallel(instance ? int64_t(request.index) : -1, out, request.filter, parts);
+    return;
+  }
+  // One thread: one part, if parts are asked for.
+  FrameGeometry* into = &out;
+  if (parts) {
+    parts->resize(1);
+    into = &parts->front();
+    into->clear();
+  }
+  if (instance)
+    pullInstance(request.index, *into, request.filter);
+  else
+    pullAll(*into);
+  if (parts) {
+    out.counters += into->counters;
+    out.width = into->width;
+    out.height = into->height;
+  }
+}
+
+void FaceTransformer::pullAll(FrameGeometry& out) {
+  for (uint32_t k = 0; k < scene_.instanceCount(); ++k) pullInstance(k, out, nullptr);
 }
 
 void FaceTransformer::projectSlots(uint32_t instance, size_t begin, size_t end, VertexState* state,
@@ -104,7 +128,7 @@ void FaceTransformer::assembleFaces(uint32_t instance, uint32_t faceBegin, uint3
 
 namespace {
 
-// Faces per chunk of pullAllParallel when one instance is cut into chunks: enough for a
+// Faces per chunk of pullParallel() when one instance is cut into chunks: enough for a
 // chunk's work to dwarf a task's cost, few enough for the chunks to balance.
 constexpr uint32_t kChunkFaces = 4096;
 
@@ -127,17 +151,8 @@ void appendChunk(const FrameGeometry& chunk, const size_t base[3], FrameGeometry
 
 }  // namespace
 
-void FaceTransformer::pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) {
-  if (!(threads_ && threads_->parallel())) {
-    GeometrySource::pullAllParts(out, parts);
-    return;
-  }
-  pullParallel(-1, out, nullptr, &parts);
-}
-
 uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filter,
-                                          std::vector<FrameGeometry>& chunks,
-                                          const SideJobs& alongside) {
+                                          std::vector<FrameGeometry>& chunks) {
   const Threads& threads = *threads_;
   const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   // A grid: one chunk per instance, each projecting its own vertices. One instance: its
@@ -158,15 +173,8 @@ uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filt
       projectSlots(only, begin, end, instanceState_.data(), instanceWindow_.data());
     });
   }
-  // The side jobs first: they are the longer tasks (a band's drawing).
-  threads.forEach(alongside.count + count, [&](size_t j) {
+  threads.forEach(count, [&](size_t c) {
     Worker& w = workers_[size_t(threads.slot())];
-    if (j < alongside.count) {
-      ScopedTimer side(w.sideMs);
-      alongside.run(j);
-      return;
-    }
-    const size_t c = j - alongside.count;
     FrameGeometry& chunk = chunks[c];
     chunk.clear();
     const uint32_t k = single ? only : uint32_t(c);
@@ -199,50 +207,33 @@ uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filt
 }
 
 void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
-                                   std::vector<const FrameGeometry*>* parts) {
+                                   std::vector<FrameGeometry>* parts) {
   ScopedTimer timer(transformMs_);
-  const uint32_t chunks = transformChunks(instance, filter, chunks_);
+  // Left in parts for the algorithms that read them so (and the shader, which reads the faces'
+  // ids): joining them would be a copy of every vertex, face and triangle.
+  std::vector<FrameGeometry>& chunks = parts ? *parts : chunks_;
+  const uint32_t count = transformChunks(instance, filter, chunks);
+  if (parts) parts->resize(count);
   // Joined in chunk order, which is face id order: the geometry of one thread exactly.
-  std::vector<std::array<size_t, 3>> base(chunks);
+  std::vector<std::array<size_t, 3>> base(count);
   size_t sizes[3] = {out.vertices.size(), out.faces.size(), out.triangles.size()};
-  for (uint32_t c = 0; c < chunks; ++c) {
+  for (uint32_t c = 0; c < count; ++c) {
     base[c] = {sizes[0], sizes[1], sizes[2]};
-    sizes[0] += chunks_[c].vertices.size();
-    sizes[1] += chunks_[c].faces.size();
-    sizes[2] += chunks_[c].triangles.size();
-    out.counters += chunks_[c].counters;
+    sizes[0] += chunks[c].vertices.size();
+    sizes[1] += chunks[c].faces.size();
+    sizes[2] += chunks[c].triangles.size();
+    out.counters += chunks[c].counters;
   }
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
-  // Left in parts for the algorithms that read them so (and the shader, which reads the faces'
-  // ids): joining them would be a copy of every vertex, face and triangle.
-  if (parts) {
-    parts->clear();
-    for (uint32_t c = 0; c < chunks; ++c) parts->push_back(&chunks_[c]);
-    return;
-  }
+  if (parts) return;
   out.vertices.resize(sizes[0]);
   out.faces.resize(sizes[1]);
   out.triangles.resize(sizes[2]);
-  threads_->forEach(chunks, [&](size_t c) { appendChunk(chunks_[c], base[c].data(), out); });
-}
-
-void FaceTransformer::pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
-                                        TriangleFilter* filter, const SideJobs& alongside) {
-  if (!(threads_ && threads_->parallel())) {
-    GeometrySource::pullInstanceParts(instance, parts, filter, alongside);
-    return;
-  }
-  // The side jobs' time, counted in the workers' sideMs, comes off this (transformMs()).
-  ScopedTimer timer(transformMs_);
-  parts.resize(transformChunks(instance, filter, parts, alongside));
+  threads_->forEach(count, [&](size_t c) { appendChunk(chunks[c], base[c].data(), out); });
 }
 
 void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter) {
-  if (threads_ && threads_->parallel()) {
-    pullParallel(instance, out, filter);
-    return;
-  }
   ScopedTimer timer(transformMs_);
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
@@ -341,7 +332,9 @@ void prefetchRange(const T* first, size_t count) {
 
 }  // namespace
 
-void FaceTransformer::prefetchBatch(uint32_t batch) const {
+void FaceTransformer::prefetch(const FaceRequest& request) const {
+  if (request.scope != FaceRequest::Scope::Batch) return;
+  const uint32_t batch = request.index;
   const MeshLayout::Batches& b = layout_.batches();
   const uint32_t f0 = b.faceStart[batch], f1 = b.faceStart[batch + 1];
   const uint32_t v0 = b.vertexStart[batch], v1 = b.vertexStart[batch + 1];

@@ -44,9 +44,9 @@ class PyramidFilter : public TriangleFilter {
 };
 
 // The transform's filter with several threads: the tiles of each band's pyramid where an
-// instance's nearest depth is behind, marked before the instance's faces; no face is asked
-// alone, as the bands draw the instance before while the faces are transformed (the bands'
-// tests drop such faces then).
+// instance's nearest depth is behind, marked by the algorithm before the instance is pulled
+// (markInstance), as the bands draw the instance before it while its faces are transformed; no
+// face is asked alone (the bands' tests drop such faces then).
 class BandTilesFilter : public TriangleFilter {
  public:
   BandTilesFilter(const std::vector<HzbRasterizer>& rasterizers, const RowBands& bands,
@@ -57,11 +57,16 @@ class BandTilesFilter : public TriangleFilter {
     hiddenTiles_.assign(size_t(tilesX) * size_t(tilesY), 0);
     tilesX_ = tilesX;
   }
-  // As PyramidFilter's, each band marking its own rows of tiles.
-  HiddenTiles beginInstance(float nearestDepth, const SampleRect& area) override {
+  // As PyramidFilter's beginInstance(), each band marking its own rows of tiles, for the
+  // instance seen as `view`, from the pyramids as they are now: the pull asks beginInstance()
+  // for these marks under the same conditions (inside the view volume, nearest depth > 0).
+  void markInstance(const InstanceView& view) {
+    if (view.outside || !(view.nearest > 0.0f)) return;
     mark(marked_, 0);
-    marked_ = area;
-    mark(area, makeDepthKey(nearestDepth, 0));
+    marked_ = view.area;
+    mark(view.area, makeDepthKey(view.nearest, 0));
+  }
+  HiddenTiles beginInstance(float, const SampleRect&) override {
     return HiddenTiles{hiddenTiles_.data(), DepthPyramid::kTileShift, tilesX_};
   }
   bool hidden(const FixedPoint*, float, uint32_t) override { return false; }
@@ -119,7 +124,7 @@ void HierarchicalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderSta
   for (size_t i = 0; i < instances_.size(); ++i) {
     const size_t firstTriangle = g.triangles.size();
     // The first instance finds the pyramid empty: nothing to ask it.
-    input.source.pullInstance(instances_[i], g, i > 0 ? &filter : nullptr);
+    input.source.pull(FaceRequest::instance(instances_[i], i > 0 ? &filter : nullptr), g);
 
     // Band order keeps the z-buffer's cache locality; in the last instance, the rows above a
     // band are final once it starts (no later triangle starts above it).
@@ -158,22 +163,27 @@ void HierarchicalAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, Rend
     for (size_t k = 0; k < bandTriangles_.size(int(b)); ++k)
       bandRasterizers_[b].drawTriangle(*t[k], bandStats_[b]);
   };
-  // Each instance is drawn while the next one is transformed, among its tasks: the bands that
-  // hold its triangles, each a task. The next one's filter marks its tiles before, from the
-  // pyramids as the instances before the one being drawn left them.
+  // Each instance is drawn while the next one is transformed: the pull one task, the bands that
+  // hold the instance's triangles one task each. The next one's filter marks its tiles before,
+  // from the pyramids as the instances before the one being drawn left them.
   instanceParts_.resize(instances_.size());
   FaceParts faces;  // every part of the instances pulled so far
   std::vector<size_t> segments;
   std::vector<size_t> busyBands;  // bands with triangles of the instance listed last
   for (size_t i = 0; i < instances_.size(); ++i) {
     std::vector<FrameGeometry>& parts = instanceParts_[i];
-    const SideJobs drawLast{busyBands.size(), [&](size_t j) { drawBand(busyBands[j]); }};
-    input.source.pullInstanceParts(instances_[i], parts, i > 0 ? &filter : nullptr, drawLast);
+    if (i > 0) filter.markInstance(input.source.viewOfInstance(instances_[i]));
+    const FaceRequest request = FaceRequest::instance(instances_[i], i > 0 ? &filter : nullptr);
+    threads.forEach(busyBands.size() + 1, [&](size_t j) {
+      if (j == 0)
+        input.source.pull(request, g, &parts);
+      else
+        drawBand(busyBands[j - 1]);
+    });
     segments.clear();
     for (const FrameGeometry& part : parts) {
       faces.push_back(&part);
       segments.push_back(part.triangles.size());
-      g.counters += part.counters;
     }
     // The instance's triangles in each band they reach.
     bandTriangles_.build(

@@ -25,7 +25,7 @@ inline DepthKey capped(DepthKey k) {
 void IntervalAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const int width = fb.width(), height = fb.height();
   if (!input.parallel()) {
-    input.source.pullAll(input.geometry);
+    input.source.pull(FaceRequest::frame(), input.geometry);
     const FrameGeometry& g = input.geometry;
     whole_.tables_.build(g, width, height);
     stats.trianglesRasterized += whole_.tables_.triangleCount;

@@ -60,7 +60,7 @@ void OctreeAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& st
         stats,
         [&](uint32_t leaf) {
           const size_t firstTriangle = g.triangles.size();
-          input.source.pullBatch(leafBatch_[leaf], g);
+          input.source.pull(FaceRequest::batch(leafBatch_[leaf]), g);
           const ScreenTriangle* triangles = g.triangles.data() + firstTriangle;
           drawLeaf(
               whole_.rasterizer, g.triangles.size() - firstTriangle,
@@ -142,7 +142,7 @@ const GeometryVector<ScreenTriangle>& OctreeAlgorithm::leafTriangles(uint32_t ba
     scratch.triangles.clear();
     scratch.faces.clear();
     scratch.vertices.clear();
-    source.pullBatch(batch, scratch);
+    source.pull(FaceRequest::batch(batch), scratch);
     leafTriangles_[batch].assign(scratch.triangles.begin(), scratch.triangles.end());
     std::vector<RowRange>& ranges = leafRows_[batch];
     ranges.resize(scratch.triangles.size());
@@ -203,7 +203,7 @@ void OctreeAlgorithm::traverse(const FrameInput& input, const OctreeNodeTest& te
     if (node.childMask == 0) {
       // The next node is likely the next leaf: fetch its faces while this one draws.
       if (!stack.empty() && nodes[stack.back()].childMask == 0)
-        input.source.prefetchBatch(leafBatch_[stack.back()]);
+        input.source.prefetch(FaceRequest::batch(leafBatch_[stack.back()]));
       drawLeaf(nodeIndex);
       continue;
     }

@@ -9,7 +9,7 @@ namespace zrender {
 void ScanlineAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const int width = fb.width(), height = fb.height();
   if (!input.parallel()) {
-    input.source.pullAll(input.geometry);
+    input.source.pull(FaceRequest::frame(), input.geometry);
     const FrameGeometry& g = input.geometry;
     whole_.tables.build(g, width, height);
     stats.trianglesRasterized += whole_.tables.triangleCount;

@@ -11,7 +11,7 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
     renderBands(input, fb, stats);
     return;
   }
-  input.source.pullAll(input.geometry);
+  input.source.pull(FaceRequest::frame(), input.geometry);
   const int width = fb.width(), height = fb.height();
   const GeometryVector<ScreenTriangle>& triangles = bands_.sort(input.geometry, width, height);
 
@@ -45,7 +45,8 @@ void ZBufferAlgorithm::render(FrameInput& input, FrameBuffer& fb, RenderStats& s
 
 void ZBufferAlgorithm::renderBands(FrameInput& input, FrameBuffer& fb, RenderStats& stats) {
   const Threads& threads = *input.threads;
-  input.source.pullAllParts(input.geometry, parts_);
+  input.source.pull(FaceRequest::frame(), input.geometry, &partGeometry_);
+  parts_ = partsOf(partGeometry_);
   input.facesGathered(parts_);
   const int width = fb.width(), height = fb.height();
   const GeometryVector<ScreenTriangle>& triangles = bands_.bin(parts_, width, height, threads);

@@ -112,7 +112,7 @@ TEST(DepthRule, ReversedSubmissionGivesTheSameBuffers) {
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, false);
   FrameGeometry g;
-  transformer.pullAll(g);
+  transformer.pull(FaceRequest::frame(), g);
   FrameGeometry reversed = g;
   std::reverse(reversed.triangles.begin(), reversed.triangles.end());
   const FrameBuffer a = runZBuffer(g), b = runZBuffer(reversed);
@@ -186,7 +186,7 @@ TEST(DepthRule, TransformSetsTheRangeFromTheCornerDepths) {
   const Camera camera = makeCamera(scene);
   FaceTransformer transformer(scene, camera, 1, true);
   FrameGeometry g;
-  transformer.pullAll(g);
+  transformer.pull(FaceRequest::frame(), g);
   ASSERT_EQ(g.faces.size(), 1u);
   const double n = 0.1, f = 10.0;
   auto windowDepth = [&](double d) {

@@ -114,9 +114,8 @@ size_t coveredSamples(const FrameBuffer& fb);
 class GivenGeometry : public GeometrySource {
  public:
   void beginFrame(const Camera&) override {}
-  void pullAll(FrameGeometry&) override {}
-  void pullInstance(uint32_t, FrameGeometry&, TriangleFilter*) override {}
-  void pullBatch(uint32_t, FrameGeometry&) override {}
+  void pull(const FaceRequest&, FrameGeometry&, std::vector<FrameGeometry>*) override {}
+  InstanceView viewOfInstance(uint32_t) const override { return InstanceView(); }
   double transformMs() const override { return 0.0; }
 };
 

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -119,7 +118,7 @@ TEST(FaceTransformer, BatchesGiveWhatFaceByFaceGives) {
       FrameGeometry expected, actual;
       for (uint32_t id : order) byFace.transformFace(id, expected);
       for (uint32_t batch = 0; batch + 1 < batches.size(); ++batch)
-        byBatch.pullBatch(batch, actual);
+        byBatch.pull(FaceRequest::batch(batch), actual);
       // Not vacuous: many faces went through the whole path, some were clipped or dropped.
       EXPECT_GT(expected.triangles.size() + expected.counters.backfaceCulled, 300u);
       EXPECT_GT(expected.triangles.size(), 0u);
@@ -140,7 +139,7 @@ TEST(FaceTransformer, EveryFaceCarriesTheSampleRowsOfItsCorners) {
     const Camera camera = floorGridCamera(s, scene, Vec3(0.3, 0.2, 1.0));
     transformer.beginFrame(camera);
     FrameGeometry g;
-    transformer.pullAll(g);
+    transformer.pull(FaceRequest::frame(), g);
     ASSERT_GT(g.faces.size(), 100u);
     size_t clampedAbove = 0, clampedBelow = 0;
     for (const ScreenFace& face : g.faces) {
@@ -183,7 +182,7 @@ TEST(FaceTransformer, InstancesGiveWhatFaceByFaceGives) {
       FrameGeometry expected, actual;
       for (uint32_t k : instances) {
         for (uint32_t f = 0; f < nf; ++f) byFace.transformFace(k * nf + f, expected);
-        byInstance.pullInstance(k, actual);
+        byInstance.pull(FaceRequest::instance(k), actual);
       }
       // Not vacuous: many faces went through the whole path, some were clipped or dropped.
       EXPECT_GT(expected.triangles.size() + expected.counters.backfaceCulled, 300u);
@@ -233,7 +232,7 @@ TEST(FaceTransformer, InstancesWhollyOutsideTheViewAreOnlyCounted) {
     for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
       EXPECT_EQ(byInstance.viewOfInstance(k).outside, bool(c.outside[k])) << "instance " << k;
       for (uint32_t face = 0; face < nf; ++face) byFace.transformFace(k * nf + face, expected);
-      byInstance.pullInstance(k, actual);
+      byInstance.pull(FaceRequest::instance(k), actual);
     }
     EXPECT_GT(expected.triangles.size(), 0u);
     EXPECT_GT(expected.counters.clippedAway, 0u);
@@ -315,8 +314,8 @@ void transformWithAndWithout(const Scene& scene, TriangleFilter& filter, FrameGe
   const Camera camera = makeCamera(scene);
   FaceTransformer without(scene, camera, 1, true), with(scene, camera, 1, true);
   for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-    without.pullInstance(k, plain);
-    with.pullInstance(k, filtered, &filter);
+    without.pull(FaceRequest::instance(k), plain);
+    with.pull(FaceRequest::instance(k, &filter), filtered);
   }
 }
 
@@ -395,7 +394,7 @@ TEST(FaceTransformer, TrianglesCoveringNoSampleCentreAreDroppedBeforeTheirPlane)
   const Scene scene = makeScene(s, test::makeMesh(p, f));
   FaceTransformer transformer(scene, makeCamera(scene), 1, true);
   FrameGeometry g;
-  transformer.pullInstance(0, g);
+  transformer.pull(FaceRequest::instance(0), g);
   ASSERT_EQ(g.faces.size(), 1u);  // no plane set up, nothing stored for face 0
   EXPECT_EQ(g.faces[0].id, 1u);
   // Counted nowhere, as the z-buffer's set-up never counted them.
@@ -512,7 +511,7 @@ TEST(FaceTransformer, InstancePartsOnSeveralThreadsJoinToOneThreadsInstance) {
   // A floor of 4900 faces (two chunks of the transform on several threads) in a grid that
   // crosses the near plane and leaves the image, with and without culling and a filter: an
   // instance's parts, joined, are its geometry on one thread, and so are its parts on one
-  // thread (the default: a single part); the side jobs given to the pull run once each.
+  // thread (a single part); the geometry given beside the parts gets their counters.
   std::vector<Vec3> p;
   std::vector<std::vector<int>> f;
   addTiltedFloor(70, true, p, f);
@@ -534,13 +533,13 @@ TEST(FaceTransformer, InstancePartsOnSeveralThreadsJoinToOneThreadsInstance) {
         size_t kept = 0;
         for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
           FrameGeometry expected;
-          one.pullInstance(k, expected, asked);
+          one.pull(FaceRequest::instance(k, asked), expected);
           std::vector<FrameGeometry> parts(7);  // more than it needs: resized
-          // Jobs of the caller's among the pull's tasks: each runs once.
-          std::vector<std::atomic<int>> ran(5);
-          several.pullInstanceParts(k, parts, asked,
-                                    SideJobs{ran.size(), [&](size_t j) { ++ran[j]; }});
-          for (const std::atomic<int>& r : ran) EXPECT_EQ(r.load(), 1);
+          FrameGeometry counted;                // gets the parts' counters
+          several.pull(FaceRequest::instance(k, asked), counted, &parts);
+          EXPECT_TRUE(counted.faces.empty() && counted.triangles.empty());
+          EXPECT_EQ(counted.counters.filtered, expected.counters.filtered);
+          EXPECT_EQ(counted.counters.backfaceCulled, expected.counters.backfaceCulled);
           if (n > 1 && !expected.faces.empty()) {
             EXPECT_GT(parts.size(), 1u);
           }

@@ -10,12 +10,14 @@ class ForwardingSource : public GeometrySource {
  public:
   explicit ForwardingSource(GeometrySource& inner) : inner_(inner) {}
   void beginFrame(const Camera& camera) override { inner_.beginFrame(camera); }
-  void pullAll(FrameGeometry& out) override { inner_.pullAll(out); }
-  void pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter) override {
-    inner_.pullInstance(instance, out, filter);
+  void pull(const FaceRequest& request, FrameGeometry& out,
+            std::vector<FrameGeometry>* parts = nullptr) override {
+    inner_.pull(request, out, parts);
   }
-  void pullBatch(uint32_t batch, FrameGeometry& out) override { inner_.pullBatch(batch, out); }
-  void prefetchBatch(uint32_t batch) const override { inner_.prefetchBatch(batch); }
+  void prefetch(const FaceRequest& request) const override { inner_.prefetch(request); }
+  InstanceView viewOfInstance(uint32_t instance) const override {
+    return inner_.viewOfInstance(instance);
+  }
   double transformMs() const override { return inner_.transformMs(); }
 
  protected:

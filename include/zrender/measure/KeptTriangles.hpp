@@ -21,20 +21,15 @@ class KeptTriangles : public ForwardingSource {
     ownMs_ = 0.0;
     inner_.beginFrame(camera);
   }
-  void pullAll(FrameGeometry& out) override {
+  void pull(const FaceRequest& request, FrameGeometry& out,
+            std::vector<FrameGeometry>* parts = nullptr) override {
     const size_t first = out.triangles.size();
-    inner_.pullAll(out);
-    leaveOut(out, first);
-  }
-  void pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter) override {
-    const size_t first = out.triangles.size();
-    inner_.pullInstance(instance, out, filter);
-    leaveOut(out, first);
-  }
-  void pullBatch(uint32_t batch, FrameGeometry& out) override {
-    const size_t first = out.triangles.size();
-    inner_.pullBatch(batch, out);
-    leaveOut(out, first);
+    inner_.pull(request, out, parts);
+    if (!parts) {
+      leaveOut(out, first);
+      return;
+    }
+    for (FrameGeometry& part : *parts) leaveOut(part, 0);
   }
   double transformMs() const override { return inner_.transformMs() + ownMs_; }
 

@@ -15,10 +15,13 @@ class SkippedBatches : public ForwardingSource {
   SkippedBatches(GeometrySource& inner, std::vector<bool> skip, size_t& pulled)
       : ForwardingSource(inner), skip_(std::move(skip)), pulled_(pulled) {}
 
-  void pullBatch(uint32_t batch, FrameGeometry& out) override {
-    ++pulled_;
-    if (batch < skip_.size() && skip_[batch]) return;
-    inner_.pullBatch(batch, out);
+  void pull(const FaceRequest& request, FrameGeometry& out,
+            std::vector<FrameGeometry>* parts = nullptr) override {
+    if (request.scope == FaceRequest::Scope::Batch) {
+      ++pulled_;
+      if (request.index < skip_.size() && skip_[request.index]) return;
+    }
+    inner_.pull(request, out, parts);
   }
 
  private:

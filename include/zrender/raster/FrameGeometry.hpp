@@ -73,7 +73,7 @@ template <class T>
 using GeometryVector = std::vector<T, UninitializedAllocator<T>>;
 
 struct FrameGeometry;
-// The frame's faces in parts, part after part (GeometrySource::pullAllParts): what the shader
+// The frame's faces in parts, part after part (a GeometrySource pull with parts): what the shader
 // reads of them (their ids), without a join into one geometry.
 using FaceParts = std::vector<const FrameGeometry*>;
 
@@ -93,6 +93,14 @@ struct FrameGeometry {
 };
 
 // The faces that `parts` hold together.
+// Views of `geometries`, valid while they live unresized.
+inline FaceParts partsOf(const std::vector<FrameGeometry>& geometries) {
+  FaceParts parts;
+  parts.reserve(geometries.size());
+  for (const FrameGeometry& g : geometries) parts.push_back(&g);
+  return parts;
+}
+
 inline size_t totalFaces(const FaceParts& parts) {
   size_t n = 0;
   for (const FrameGeometry* part : parts) n += part->faces.size();

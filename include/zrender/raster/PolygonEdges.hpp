@@ -70,7 +70,7 @@ struct ClassifiedPolygon {
   uint32_t edgeCount;  // its edges that are active on some row of the image
 };
 
-// Face `face` of part `part` of a frame's geometry in parts (GeometrySource::pullAllParts).
+// Face `face` of part `part` of a frame's geometry in parts (a GeometrySource pull with parts).
 struct PartFace {
   uint32_t part;
   uint32_t face;

@@ -34,7 +34,7 @@ class TriangleBands {
                                             const Threads& threads) {
     return bin(std::vector<const FrameGeometry*>{&g}, width, height, threads);
   }
-  // The same for the triangles of geometry in parts (GeometrySource::pullAllParts).
+  // The same for the triangles of geometry in parts (a GeometrySource pull with parts).
   const GeometryVector<ScreenTriangle>& bin(const std::vector<const FrameGeometry*>& parts,
                                             int width, int height, const Threads& threads);
 

@@ -23,55 +23,49 @@ namespace zrender {
 // volume, with margin, is only counted: every face of it would be clipped away.
 class FaceTransformer : public GeometrySource {
  public:
-  // sampleScale: 1, or 2 for MSAA 4. `batches`: what pullBatch() numbers (the algorithm's
+  // sampleScale: 1, or 2 for MSAA 4. `batches`: what Batch requests number (the algorithm's
   // prepare()); the model-only set-up is done here (prepare_ms).
   FaceTransformer(const Scene& scene, int sampleScale, bool cull,
                   FaceBatches batches = FaceBatches());
   // The same, with beginFrame(camera) done.
   FaceTransformer(const Scene& scene, const Camera& camera, int sampleScale, bool cull);
 
-  // The threads pullAll() may spread its work over (null or one: the calling thread alone);
-  // its geometry is the same whatever their number.
+  // The threads a pull may spread its work over (null or one: the calling thread alone); its
+  // geometry is the same whatever their number.
   void setThreads(const Threads* threads) { threads_ = threads; }
 
   void beginFrame(const Camera& camera) override;
-  void pullAll(FrameGeometry& out) override;
-  // On several threads, the parts are the chunks of pullAll() left apart.
-  void pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) override;
-  void pullInstance(uint32_t instance, FrameGeometry& out,
-                    TriangleFilter* filter = nullptr) override;
-  // On several threads, the parts are the chunks of pullInstance(), and the side jobs tasks of
-  // the chunks' loop.
-  void pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
-                         TriangleFilter* filter, const SideJobs& alongside = SideJobs()) override;
-  void pullBatch(uint32_t batch, FrameGeometry& out) override;
-  void prefetchBatch(uint32_t batch) const override;
+  // On several threads, a Frame or Instance pull's parts are its chunks.
+  void pull(const FaceRequest& request, FrameGeometry& out,
+            std::vector<FrameGeometry>* parts = nullptr) override;
+  void prefetch(const FaceRequest& request) const override;
+  InstanceView viewOfInstance(uint32_t instance) const override;
   // With several threads, the time of the batches they pulled at once counts divided by their
   // number (docs/design.md, Timings and JSON).
   double transformMs() const override;
 
-  // What the box of an instance's positions tells about its vertices in this frame.
-  InstanceView viewOfInstance(uint32_t instance) const;
   const MeshLayout& layout() const { return layout_; }
   int sampleScale() const { return viewport_.scale; }
   const Mat4& modelViewProjection(uint32_t instance) const { return mvp_[instance]; }
 
  private:
+  void pullAll(FrameGeometry& out);
+  void pullInstance(uint32_t instance, FrameGeometry& out, TriangleFilter* filter);
+  void pullBatch(uint32_t batch, FrameGeometry& out);
   void projectInstance(uint32_t instance);
   void projectBatch(uint32_t batch, std::vector<VertexState>& state,
                     std::vector<Vec3>& window) const;
-  // pullAll() (`instance` -1) or pullInstance() on several threads: the faces in chunks, each
-  // into geometry of its own, then joined in face id order. `filter` is asked from every
-  // thread at once.
+  // A Frame (`instance` -1) or Instance pull on several threads: the faces in chunks, each
+  // into geometry of its own, then joined in face id order into `out`, or left in `parts`.
+  // `filter` is asked from every thread at once.
   void pullParallel(int64_t instance, FrameGeometry& out, TriangleFilter* filter,
-                    std::vector<const FrameGeometry*>* parts = nullptr);
+                    std::vector<FrameGeometry>* parts);
   // The chunks of pullParallel(), into `chunks` (grown as needed; the first ones used, each
-  // cleared first), with `alongside` among the chunks' tasks; returns their number.
+  // cleared first); returns their number.
   uint32_t transformChunks(int64_t instance, TriangleFilter* filter,
-                           std::vector<FrameGeometry>& chunks,
-                           const SideJobs& alongside = SideJobs());
-  // A chunk's part of pullAllParallel: faces [faceBegin, faceEnd) of `instance`, whose
-  // vertices `vertices` holds, by `assembler`.
+                           std::vector<FrameGeometry>& chunks);
+  // A chunk's part of pullParallel: faces [faceBegin, faceEnd) of `instance`, whose vertices
+  // `vertices` holds, by `assembler`.
   void assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,
                      const VertexView& vertices, FaceAssembler& assembler,
                      FrameGeometry& out) const;
@@ -98,7 +92,6 @@ class FaceTransformer : public GeometrySource {
     std::vector<VertexState> state;
     std::vector<Vec3> window;
     double batchMs = 0.0;
-    double sideMs = 0.0;  // in side jobs, inside the transform's time
   };
   std::vector<Worker> workers_;
   std::vector<FrameGeometry> chunks_;

@@ -2,12 +2,12 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <vector>
 
 #include "zrender/raster/FrameGeometry.hpp"
 #include "zrender/raster/RasterRules.hpp"
 #include "zrender/scene/Camera.hpp"
+#include "zrender/transform/InstanceView.hpp"
 
 namespace zrender {
 
@@ -42,29 +42,35 @@ class TriangleFilter {
   virtual bool asksFaces() const { return true; }
 };
 
-// Jobs of the caller's that a pull runs among its own tasks (GeometrySource::pullInstanceParts):
-// run(j) for every j in [0, count), on any of the threads, at the same time as each other and as
-// the pull's work after its TriangleFilter::beginInstance().
-struct SideJobs {
-  size_t count = 0;
-  std::function<void(size_t)> run;
-};
-
-// The groups of faces an algorithm pulls one at a time (GeometrySource::pullBatch): batch b is
-// the face ids (*faces)[(*starts)[b], (*starts)[b + 1]) (starts ascending, from 0 to
-// faces->size()). Views of the algorithm's own arrays, valid while it lives; null: none.
+// The groups of faces an algorithm pulls one at a time (FaceRequest::batch): batch b is the face
+// ids (*faces)[(*starts)[b], (*starts)[b + 1]) (starts ascending, from 0 to faces->size()).
+// Views of the algorithm's own arrays, valid while it lives; null: none.
 struct FaceBatches {
   const std::vector<uint32_t>* faces = nullptr;
   const std::vector<uint32_t>* starts = nullptr;
   bool empty() const { return faces == nullptr || starts == nullptr; }
 };
 
+// The faces a pull asks for, in the grain the algorithm draws by: every face of the frame, those
+// of one grid instance, or those of one of the batches its prepare() returned.
+struct FaceRequest {
+  enum class Scope : uint8_t { Frame, Instance, Batch };
+  Scope scope = Scope::Frame;
+  uint32_t index = 0;  // the instance or the batch
+  // Instance only: triangle faces it proves hidden are left out (counted in
+  // TransformCounters::filtered, or dropped uncounted by hidden()).
+  TriangleFilter* filter = nullptr;
+
+  static FaceRequest frame() { return FaceRequest(); }
+  static FaceRequest instance(uint32_t k, TriangleFilter* filter = nullptr) {
+    return FaceRequest{Scope::Instance, k, filter};
+  }
+  static FaceRequest batch(uint32_t b) { return FaceRequest{Scope::Batch, b, nullptr}; }
+};
+
 // Where a visibility algorithm gets the frame's faces in window space (docs/design.md, The
-// transform): it pulls them in the grain it draws by, all at once, one grid instance at a
-// time, or one of its batches at a time, without knowing how they are computed. Each pull
-// appends faces and their triangles to `out` (and sets out.width and out.height, in samples);
-// a face is pulled at most once a frame. The time spent in pulls is the frame's transform
-// time.
+// transform), without knowing how they are computed. A face is pulled at most once a frame.
+// The time spent in pulls is the frame's transform time.
 class GeometrySource {
  public:
   virtual ~GeometrySource() = default;
@@ -73,40 +79,25 @@ class GeometrySource {
   // transform time starts again from 0.
   virtual void beginFrame(const Camera& camera) = 0;
 
-  // Every face of every instance, in face id order.
-  virtual void pullAll(FrameGeometry& out) = 0;
-  // The same, but the faces may be left in parts (geometries with indices of their own, in
-  // face id order part after part) rather than joined into `out`, which then gets only the
-  // counters: joining a big frame's parts is a copy of all its triangles. For algorithms that
-  // read them on several threads. By default one part, `out` itself after pullAll().
-  virtual void pullAllParts(FrameGeometry& out, std::vector<const FrameGeometry*>& parts) {
-    pullAll(out);
-    parts.assign(1, &out);
-  }
-  // Every face of one grid instance, in face id order. With `filter`, triangle faces it proves
-  // hidden are left out (counted in out.counters.filtered, or dropped uncounted by hidden()).
-  virtual void pullInstance(uint32_t instance, FrameGeometry& out,
-                            TriangleFilter* filter = nullptr) = 0;
-  // The same, but the faces left in parts, as pullAllParts() leaves them, rather than appended
-  // to one geometry: `parts` is resized to their number and each part cleared and filled, its
-  // counters included. For algorithms that draw instance after instance on several threads,
-  // which keep each instance's parts: the join would be a copy of every face, vertex and
-  // triangle. `alongside` runs among the pull's tasks (the previous instance's drawing), and
-  // its time is not transform time. By default one part, filled by pullInstance() after the
-  // side jobs, one after another.
-  virtual void pullInstanceParts(uint32_t instance, std::vector<FrameGeometry>& parts,
-                                 TriangleFilter* filter, const SideJobs& alongside = SideJobs()) {
-    for (size_t j = 0; j < alongside.count; ++j) alongside.run(j);
-    parts.resize(1);
-    parts[0].clear();
-    pullInstance(instance, parts[0], filter);
-  }
-  // The faces of batch `batch` of the FaceBatches the algorithm's prepare() returned, in order.
-  // A transform given several threads takes pulls of batches from all of them at once (each
-  // into its own `out`), and counts their time divided by the threads' number.
-  virtual void pullBatch(uint32_t batch, FrameGeometry& out) = 0;
-  // A hint: batch `batch` comes soon (its data can be fetched into cache meanwhile).
-  virtual void prefetchBatch(uint32_t /*batch*/) const {}
+  // Appends the faces `request` asks for to `out`, in face id order, with their triangles and
+  // counters, and sets out.width and out.height (samples).
+  //
+  // With `parts` (Frame and Instance requests), the faces are left in parts instead, each a
+  // geometry with indices of its own, in face id order part after part: `parts` is resized to
+  // their number and each part cleared and filled, counters included; `out` gets only the
+  // counters. For algorithms that read them on several threads: joining a big frame's parts is
+  // a copy of all its triangles.
+  //
+  // A transform given several threads spreads a Frame or Instance pull over them, and takes
+  // Batch pulls from all of them at once (each into its own `out`).
+  virtual void pull(const FaceRequest& request, FrameGeometry& out,
+                    std::vector<FrameGeometry>* parts = nullptr) = 0;
+  // A hint: `request` comes soon (its data can be fetched into cache meanwhile).
+  virtual void prefetch(const FaceRequest& /*request*/) const {}
+
+  // What the box of an instance's positions tells about it in this frame (where it may be on
+  // screen, its nearest depth), as an Instance pull sees it before its faces.
+  virtual InstanceView viewOfInstance(uint32_t instance) const = 0;
 
   // Milliseconds spent in beginFrame() and the pulls since beginFrame().
   virtual double transformMs() const = 0;

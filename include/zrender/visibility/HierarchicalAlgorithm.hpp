@@ -13,16 +13,16 @@ namespace zrender {
 
 // Greene, Kass and Miller's hierarchical z-buffer without the object-space octree: every face
 // is transformed, and each triangle is tested against the z-pyramid before rasterization.
-// Instances (of a grid) are taken one at a time, nearest first: each is transformed
-// (GeometrySource::pullInstance) with the pyramid as its previous ones left it as a filter, so that
+// Instances (of a grid) are taken one at a time, nearest first: each is pulled (an Instance
+// FaceRequest) with the pyramid as its previous ones left it as a filter, so that
 // a triangle face already proved hidden there costs no depth plane, no storage and no sorting; then
 // its triangles are drawn in bands of sample rows, top to bottom, in face id order within a band
 // (TriangleBands), each tested against the pyramid again. A model whose faces come front to back in
 // the file keeps most of its culling within one instance. With several threads, the image is cut
 // into bands of rows, each with a pyramid of its own: an instance is transformed by all the
-// threads while the bands draw the one before it (GeometrySource::pullInstanceParts and its
-// side jobs), its faces left in the parts the threads transformed them into, and the filter
-// drops only the faces in tiles where the instance's nearest depth is behind.
+// threads while the bands draw the one before it (the pull and the bands' drawing tasks of one
+// loop), its faces left in the parts the threads transformed them into, and the filter drops
+// only the faces in tiles where the instance's nearest depth is behind.
 class HierarchicalAlgorithm : public VisibilityAlgorithm {
  public:
   std::string name() const override { return "hierarchical"; }

@@ -13,7 +13,7 @@ namespace zrender {
 // How the scan-line algorithms draw a frame on several threads: the image cut into bands of
 // rows, each drawn by one thread from polygon tables of its own (PolygonTables::build for a
 // band) and shaded by it, the longest bands first (BandOrder); the counters of the bands added
-// up in band order. The frame's faces come in parts (GeometrySource::pullAllParts): a big
+// up in band order. The frame's faces come in parts (a Frame pull with parts): a big
 // frame's are not joined into one geometry, a copy of all of them.
 class PolygonBands {
  public:
@@ -23,7 +23,8 @@ class PolygonBands {
   void draw(FrameInput& input, int width, int height, RenderStats& stats, const TablesOf& tablesOf,
             const DrawBand& drawBand) {
     const Threads& threads = *input.threads;
-    input.source.pullAllParts(input.geometry, parts_);
+    input.source.pull(FaceRequest::frame(), input.geometry, &partGeometry_);
+    parts_ = partsOf(partGeometry_);
     input.facesGathered(parts_);
     const RowBands bands(height, threads.count() * kBandsPerThread);
     std::vector<size_t> faceCounts;
@@ -56,7 +57,8 @@ class PolygonBands {
   }
 
  private:
-  std::vector<const FrameGeometry*> parts_;  // the frame's faces
+  std::vector<FrameGeometry> partGeometry_;  // the frame's faces
+  FaceParts parts_;                          // views of them
   BandPlacer placer_;
   std::vector<PartFace> faces_;  // the faces of each band, band after band
   std::vector<RenderStats> bandStats_;

@@ -71,7 +71,7 @@ class VisibilityAlgorithm {
   virtual ~VisibilityAlgorithm() = default;
   virtual std::string name() const = 0;
   // Work that depends on the model only, done once for all frames (timed as prepare_ms). Returns
-  // the batches the algorithm pulls (GeometrySource::pullBatch), if any: views of its own
+  // the batches the algorithm pulls (FaceRequest::batch), if any: views of its own
   // arrays, valid while it lives.
   virtual FaceBatches prepare(const Scene& /*scene*/) { return FaceBatches(); }
   // `fb` is sized to geometry's sample size but not cleared: clearing is part of the work.

@@ -20,7 +20,8 @@ class ZBufferAlgorithm : public VisibilityAlgorithm {
 
   TriangleBands bands_;
   std::vector<RenderStats> bandStats_;       // renderBands(): each band's counters
-  std::vector<const FrameGeometry*> parts_;  // renderBands(): the frame's geometry
+  std::vector<FrameGeometry> partGeometry_;  // renderBands(): the frame's geometry
+  FaceParts parts_;                          // views of it
 };
 
 }  // namespace zrender
