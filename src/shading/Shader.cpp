@@ -116,7 +116,7 @@ void Shader::findDepthRange(ShadingFrame& frame) const {
       }
     }
   };
-  if (frame.threads && frame.threads->parallel())
+  if (frame.parallel())
     frame.threads->forRanges(rows, 16, rangeOfRows);
   else
     rangeOfRows(0, rows);
@@ -142,7 +142,7 @@ bool Shader::prepareFaces(ShadingFrame& frame, bool bufferFinal) {
 }
 
 void Shader::facesGathered(ShadingFrame& frame, const FaceParts& faces) {
-  if (!(frame.threads && frame.threads->parallel())) return;  // faces are colored on sight
+  if (!frame.parallel()) return;  // faces are colored on sight
   frame.faces = faces;
   if (faceColors_) faceColors_->begin(frame.modelView, frame.background, frame.faces);
   frame.earlyShading = prepareFaces(frame, false);
@@ -150,7 +150,7 @@ void Shader::facesGathered(ShadingFrame& frame, const FaceParts& faces) {
 
 void Shader::rowsDone(ShadingFrame& frame, int first, int end) {
   const int scale = frame.scale, rows = frame.color->rows;
-  if (!(frame.threads && frame.threads->parallel())) {
+  if (!frame.parallel()) {
     // Depth mode stretches over the depths of the whole frame: it waits for finish().
     if (mode_ != ShadingMode::Depth) shadePixelRows(frame, std::min(end / scale, rows));
     return;
@@ -165,7 +165,7 @@ void Shader::rowsDone(ShadingFrame& frame, int first, int end) {
 
 void Shader::finish(ShadingFrame& frame) {
   if (mode_ == ShadingMode::Depth) findDepthRange(frame);
-  if (!(frame.threads && frame.threads->parallel())) {
+  if (!frame.parallel()) {
     shadePixelRows(frame, frame.color->rows);
     return;
   }

@@ -213,7 +213,13 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
   // ids): joining them would be a copy of every vertex, face and triangle.
   std::vector<FrameGeometry>& chunks = parts ? *parts : chunks_;
   const uint32_t count = transformChunks(instance, filter, chunks);
-  if (parts) parts->resize(count);
+  for (uint32_t c = 0; c < count; ++c) out.counters += chunks[c].counters;
+  out.width = viewport_.width * viewport_.scale;
+  out.height = viewport_.height * viewport_.scale;
+  if (parts) {
+    parts->resize(count);
+    return;
+  }
   // Joined in chunk order, which is face id order: the geometry of one thread exactly.
   std::vector<std::array<size_t, 3>> base(count);
   size_t sizes[3] = {out.vertices.size(), out.faces.size(), out.triangles.size()};
@@ -222,11 +228,7 @@ void FaceTransformer::pullParallel(int64_t instance, FrameGeometry& out, Triangl
     sizes[0] += chunks[c].vertices.size();
     sizes[1] += chunks[c].faces.size();
     sizes[2] += chunks[c].triangles.size();
-    out.counters += chunks[c].counters;
   }
-  out.width = viewport_.width * viewport_.scale;
-  out.height = viewport_.height * viewport_.scale;
-  if (parts) return;
   out.vertices.resize(sizes[0]);
   out.faces.resize(sizes[1]);
   out.triangles.resize(sizes[2]);

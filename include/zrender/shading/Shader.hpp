@@ -40,6 +40,8 @@ struct ShadingFrame {
   // pixel rows are colored.
   bool earlyShading = false;
   std::vector<uint8_t> rowDone;
+
+  bool parallel() const { return threads != nullptr && threads->parallel(); }
 };
 
 // Deferred shading (docs/design.md, Faces, ids and shading): turns the visibility buffer into
