@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Runs each libFuzzer target of fuzz/ for SECONDS seconds, starting from the seed corpus.
-#   tools/fuzz.sh SECONDS [TARGET...]      TARGET: obj settings render grid (default: all four)
+#   tools/fuzz.sh SECONDS [TARGET...]      TARGET: obj settings render grid model (default: all five)
 # Configures and builds build-fuzz/ with clang (-DZRENDER_FUZZ=ON) when needed. The corpus is
 # copied to a temporary folder, so new corpus entries stay out of the repository. Prints the
 # executions of each target and exits non-zero if any target crashed, hung or broke a contract;
@@ -10,13 +10,13 @@
 # run explores the same inputs each time).
 set -euo pipefail
 
-usage() { echo "usage: $0 SECONDS [obj|settings|render|grid ...]" >&2; exit 2; }
+usage() { echo "usage: $0 SECONDS [obj|settings|render|grid|model ...]" >&2; exit 2; }
 [[ $# -ge 1 && $1 =~ ^[0-9]+$ && $1 -gt 0 ]] || usage
 seconds=$1
 shift
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(obj settings render grid)
-for t in "${targets[@]}"; do [[ $t =~ ^(obj|settings|render|grid)$ ]] || usage; done
+[[ ${#targets[@]} -gt 0 ]] || targets=(obj settings render grid model)
+for t in "${targets[@]}"; do [[ $t =~ ^(obj|settings|render|grid|model)$ ]] || usage; done
 
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${ZRENDER_FUZZ_BUILD:-$root/build-fuzz}
@@ -55,7 +55,7 @@ for t in "${targets[@]}"; do
   set +e
   # -timeout: an input taking over 10 s counts as a hang; -rss_limit_mb: as a memory blow-up.
   # TMPDIR: the targets' scratch files (an .mtl beside the model) stay in the work folder.
-  TMPDIR=$work "$build/fuzz/fuzz_$t" "${dict[@]}" -max_total_time="$seconds" -seed="${ZRENDER_FUZZ_SEED:-0}" -timeout=10 -rss_limit_mb=2048 \
+  TMPDIR=$work LSAN_OPTIONS=suppressions=$root/tools/lsan.supp:print_suppressions=0 "$build/fuzz/fuzz_$t" "${dict[@]}" -max_total_time="$seconds" -seed="${ZRENDER_FUZZ_SEED:-0}" -timeout=10 -rss_limit_mb=2048 \
     -max_len=8192 -print_final_stats=1 -artifact_prefix="$artifacts/$t-" "$corpus" >"$log" 2>&1
   rc=$?
   set -e

@@ -22,5 +22,6 @@ ninja -C "$build" zrender_tests
 # Reports name the source line; leaks are checked at exit; UBSan prints a stack.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/tools/lsan.supp:print_suppressions=0}
 cd "$build"
 ctest --output-on-failure -j "$jobs" "$@"

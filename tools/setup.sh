@@ -12,6 +12,7 @@ packages=(g++ cmake ninja-build pkg-config
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-videoio-dev
   libopencv-highgui-dev libx11-dev
   libpng-dev libisal-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev
+  libassimp-dev
   xvfb xdotool x11-apps)
 missing=()
 for p in "${packages[@]}"; do

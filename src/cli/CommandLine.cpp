@@ -12,6 +12,7 @@
 #include "zrender/cli/RenderCommand.hpp"
 #include "zrender/cli/SceneResolution.hpp"
 #include "zrender/cli/ViewCommand.hpp"
+#include "zrender/io/models/ModelFormats.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -83,6 +84,19 @@ void checkAlgorithm(const std::string& name, const char* option) {
 
 // Parses argv into `app`'s options. False when help or the version was asked for (and
 // printed); a bad option is an InputError.
+// What --formats prints: a line per format, its extensions and what it holds.
+std::string modelFormatsText() {
+  std::string text = "zrender reads these model formats, chosen by the file's extension:\n";
+  for (const ModelFormatInfo& info : modelFormats()) {
+    std::string extensions;
+    for (const char* e : info.extensions)
+      extensions += (extensions.empty() ? "" : " ") + std::string(e);
+    extensions.resize(std::max<size_t>(extensions.size(), 12), ' ');
+    text += "  " + extensions + "  " + info.description + "\n";
+  }
+  return text;
+}
+
 bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
   try {
     app.parse(argc, argv);
@@ -91,6 +105,8 @@ bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
     return false;
   } catch (const CLI::CallForVersion& e) {
     out << e.what() << '\n';
+    return false;
+  } catch (const CLI::Success&) {  // --formats, printed by its callback
     return false;
   } catch (const CLI::ParseError& e) {
     throw InputError("command line: " + messageLine(e.what()));
@@ -165,7 +181,17 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
       "zrender"};
   RenderOptions options;
   app.set_version_flag("--version", "zrender " ZRENDER_VERSION);
-  app.add_option("scene", options.scene, "a scene of settings.json, or a model file")->required();
+  app.add_flag_callback(
+      "--formats",
+      [&out] {
+        out << modelFormatsText();
+        throw CLI::Success();
+      },
+      "list the model formats zrender reads");
+  std::vector<std::string> scenes;
+  app.add_option("scene", scenes,
+                 "a scene of settings.json, or model files (several: one scene of them all)")
+      ->required();
   app.add_option("-a,--alg", options.algorithm, "zbuffer scanline interval hierarchical octree");
   app.add_option("-o,--output", options.output, "color image (.png .jpg .bmp .ppm .tif)");
   app.add_option("--depth", options.depth, "depth image (.tif/.exr 32-bit float, .png 16-bit)");
@@ -183,6 +209,8 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
       ->check(CLI::Range(1, kMaxThreads));
   addSceneOptions(app, options.overrides, vectors, options.settings);
   if (!parseArguments(app, argc, argv, out)) return 0;
+  options.scene = scenes.front();
+  options.moreModels.assign(scenes.begin() + 1, scenes.end());
   finishVectors(vectors, options.overrides);
   checkAlgorithm(options.algorithm, "--alg");
   return runRender(options, out, err);

@@ -166,8 +166,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   const Threads threads(options.threads);
   const ThreadsStart threadsStart(threads);
   makeAlgorithm(options.algorithm);  // an unknown name fails before any loading
-  const SceneSettings settings =
-      resolveScene(options.scene, options.settings, options.overrides, warnings);
+  const SceneSettings settings = resolveScene(options.scene, options.settings, options.overrides,
+                                              warnings, options.moreModels);
   printWarnings(warnings, err);
   const RenderOutputs outputs = planOutputs(options, settings.name);
 

@@ -104,8 +104,28 @@ KeyOrigins keyOrigins(const SceneOverrides& o) {
 }  // namespace
 
 SceneSettings resolveScene(const std::string& scene, const std::optional<fs::path>& settingsOption,
-                           const SceneOverrides& overrides, Warnings& warnings) {
+                           const SceneOverrides& overrides, Warnings& warnings,
+                           const std::vector<std::string>& moreModels) {
   std::error_code ec;
+  if (!moreModels.empty()) {
+    // Several model files: one scene of them all, each at its own coordinates.
+    SceneSettings result = defaultSceneForModel(scene);
+    for (const std::string& file : moreModels) {
+      if (!fs::is_regular_file(file, ec))
+        throw InputError(file + ": no such model file (several scenes name model files only)");
+    }
+    if (!fs::is_regular_file(scene, ec))
+      throw InputError(scene + ": no such model file (several scenes name model files only)");
+    result.objects.push_back(SceneObject{scene});
+    for (const std::string& file : moreModels) result.objects.push_back(SceneObject{file});
+    if (!overrides.fit) {
+      result.fitKeeps = FitKeeps{overrides.eye.has_value(), overrides.target.has_value(),
+                                 overrides.near.has_value(), overrides.far.has_value()};
+    }
+    applyOverrides(overrides, result);
+    validateScene(result, "command line: scene '" + scene + "'", keyOrigins(overrides));
+    return result;
+  }
   const fs::path settingsPath = settingsOption ? *settingsOption : defaultSettingsPath();
   SceneSettings result;
   std::string where;

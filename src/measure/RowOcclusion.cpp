@@ -26,9 +26,13 @@ std::vector<size_t> samplesPerRow(const FrameBuffer& fb, const std::vector<uint3
 
 std::vector<RowOcclusion> measureRowOcclusion(const Scene& scene, const Camera& camera) {
   // Rows by offset along z; each one's distance from the eye along the view direction.
+  // A grid instance's offset is its model matrix's translation.
+  const auto offset = [&](uint32_t k) {
+    const Mat4& m = scene.modelMatrix(k);
+    return Vec3(m(0, 3), m(1, 3), m(2, 3));
+  };
   std::map<double, std::vector<uint32_t>> instancesAt;
-  for (uint32_t k = 0; k < scene.instanceCount(); ++k)
-    instancesAt[scene.instanceOffsets[k][2]].push_back(k);
+  for (uint32_t k = 0; k < scene.instanceCount(); ++k) instancesAt[offset(k)[2]].push_back(k);
   const Vec3 forward = cv::normalize(camera.target - camera.eye);
   struct Row {
     double offsetZ, distance;
@@ -37,18 +41,20 @@ std::vector<RowOcclusion> measureRowOcclusion(const Scene& scene, const Camera& 
   std::vector<Row> rows;
   for (const auto& [z, instances] : instancesAt) {
     Vec3 mean(0, 0, 0);
-    for (uint32_t k : instances) mean += scene.instanceOffsets[k];
+    for (uint32_t k : instances) mean += offset(k);
     mean *= 1.0 / double(instances.size());
     rows.push_back(Row{z, (mean - camera.eye).dot(forward), instances});
   }
   std::stable_sort(rows.begin(), rows.end(),
                    [](const Row& a, const Row& b) { return a.distance < b.distance; });
 
-  const uint32_t facesPerInstance = uint32_t(scene.mesh->faceCount());
   std::vector<uint32_t> rowOfFace(scene.faceCount());
-  for (uint32_t r = 0; r < rows.size(); ++r)
-    for (uint32_t k : rows[r].instances)
-      std::fill_n(rowOfFace.begin() + size_t(k) * facesPerInstance, facesPerInstance, r);
+  for (uint32_t r = 0; r < rows.size(); ++r) {
+    for (uint32_t k : rows[r].instances) {
+      const SceneModel& m = scene.modelOf(k);
+      std::fill_n(rowOfFace.begin() + scene.instances[k].firstId, m.faceEnd - m.faceBegin, r);
+    }
+  }
 
   Renderer renderer(scene, "zbuffer");
   renderer.renderFrame(camera);

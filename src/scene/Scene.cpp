@@ -8,10 +8,6 @@
 
 namespace zrender {
 
-Mat4 Scene::modelMatrix(uint32_t instance) const {
-  return translation(instanceOffsets[instance]) * rotation(settings.angle, settings.axis);
-}
-
 namespace {
 
 std::vector<Vec3> gridOffsets(const SceneSettings& s) {
@@ -29,66 +25,239 @@ std::vector<Vec3> gridOffsets(const SceneSettings& s) {
   return offsets;
 }
 
+SceneModel wholeMesh(const Mesh& mesh) {
+  SceneModel m;
+  m.faceEnd = uint32_t(mesh.faceCount());
+  m.positionEnd = uint32_t(mesh.positions.size());
+  m.box = boundingBox(mesh.positions);
+  return m;
+}
+
+// Bounding sphere of one model's grid, as a grid's instances only translate: centre of the box
+// of all instances, radius to the farthest vertex, exactly.
+void gridBounds(Scene& scene, const std::vector<Vec3>& offsets) {
+  const Mat4 rot = rotation(scene.settings.angle, scene.settings.axis);
+  std::vector<Vec3> rotated;
+  rotated.reserve(scene.mesh->positions.size());
+  for (const Vec3& p : scene.mesh->positions) rotated.push_back(transformPoint(rot, p));
+  if (rotated.empty()) return;
+  const Box3 box = boundingBox(rotated);
+  Vec3 offLo = offsets.front(), offHi = offsets.back();
+  for (int a = 0; a < 3; ++a) {
+    if (offLo[a] > offHi[a]) std::swap(offLo[a], offHi[a]);
+  }
+  scene.boundsCentre = ((box.lo + offLo) + (box.hi + offHi)) * 0.5;
+  // The farthest of the 8 extreme instances for each vertex, axis by axis: the squared
+  // distance is a sum over the axes, whose terms each pick the larger of two offsets, and a
+  // rounded sum never shrinks when a term grows, so this is the 8 corners' largest exactly.
+  double r2 = 0.0;
+  for (const Vec3& p : rotated) {
+    double d2 = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const double lo = (p[a] + offLo[a]) - scene.boundsCentre[a];
+      const double hi = (p[a] + offHi[a]) - scene.boundsCentre[a];
+      d2 += std::max(lo * lo, hi * hi);
+    }
+    r2 = std::max(r2, d2);
+  }
+  scene.boundsRadius = std::sqrt(r2);
+}
+
+// The same for instances of any placement: every instance's vertices in world space.
+void instanceBounds(Scene& scene) {
+  const Mesh& mesh = *scene.mesh;
+  const auto eachVertex = [&](auto&& visit) {
+    for (const SceneInstance& instance : scene.instances) {
+      const SceneModel& m = scene.models[instance.part];
+      for (uint32_t p = m.positionBegin; p < m.positionEnd; ++p)
+        visit(transformPoint(instance.model, mesh.positions[p]));
+    }
+  };
+  Box3 box{Vec3(HUGE_VAL, HUGE_VAL, HUGE_VAL), Vec3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL)};
+  bool any = false;
+  eachVertex([&](const Vec3& p) {
+    any = true;
+    for (int a = 0; a < 3; ++a)
+      box.lo[a] = std::min(box.lo[a], p[a]), box.hi[a] = std::max(box.hi[a], p[a]);
+  });
+  if (!any) return;
+  scene.boundsCentre = box.centre();
+  double r2 = 0.0;
+  eachVertex([&](const Vec3& p) {
+    const Vec3 d = p - scene.boundsCentre;
+    r2 = std::max(r2, d.dot(d));
+  });
+  scene.boundsRadius = std::sqrt(r2);
+}
+
+Mat4 scaling(const Vec3& s) {
+  return Mat4(s[0], 0, 0, 0, 0, s[1], 0, 0, 0, 0, s[2], 0, 0, 0, 0, 1);
+}
+
 }  // namespace
 
-Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, cv::Mat texture) {
+SceneMeshes joinMeshes(const std::vector<std::shared_ptr<const Mesh>>& meshes) {
+  SceneMeshes joined;
+  if (meshes.size() == 1) {
+    joined.mesh = meshes.front();
+    joined.models.push_back(wholeMesh(*joined.mesh));
+    return joined;
+  }
+  auto mesh = std::make_shared<Mesh>();
+  bool colors = false;
+  for (const auto& m : meshes) colors |= !m->faceColors.empty();
+  mesh->faceStart.push_back(0);
+  for (const auto& part : meshes) {
+    const Mesh& m = *part;
+    SceneModel model;
+    model.faceBegin = uint32_t(mesh->faceCount());
+    model.positionBegin = uint32_t(mesh->positions.size());
+    const int32_t positions = int32_t(mesh->positions.size()),
+                  texcoords = int32_t(mesh->texcoords.size()),
+                  normals = int32_t(mesh->normals.size()),
+                  materials = int32_t(mesh->materials.size());
+    const uint32_t corners = uint32_t(mesh->corners.size());
+    mesh->positions.insert(mesh->positions.end(), m.positions.begin(), m.positions.end());
+    mesh->texcoords.insert(mesh->texcoords.end(), m.texcoords.begin(), m.texcoords.end());
+    mesh->normals.insert(mesh->normals.end(), m.normals.begin(), m.normals.end());
+    mesh->materials.insert(mesh->materials.end(), m.materials.begin(), m.materials.end());
+    for (Corner c : m.corners) {
+      c.position += positions;
+      if (c.texcoord >= 0) c.texcoord += texcoords;
+      if (c.normal >= 0) c.normal += normals;
+      mesh->corners.push_back(c);
+    }
+    for (size_t f = 0; f < m.faceCount(); ++f) {
+      mesh->faceStart.push_back(corners + m.faceStart[f + 1]);
+      const int32_t material = f < m.faceMaterial.size() ? m.faceMaterial[f] : -1;
+      mesh->faceMaterial.push_back(material >= 0 ? material + materials : -1);
+      if (colors) {
+        mesh->faceColors.push_back(!m.faceColors.empty() ? m.faceColors[f]
+                                   : material >= 0       ? m.materials[size_t(material)].diffuse
+                                                         : cv::Vec3f(0.8f, 0.8f, 0.8f));
+      }
+    }
+    model.faceEnd = uint32_t(mesh->faceCount());
+    model.positionEnd = uint32_t(mesh->positions.size());
+    model.box = boundingBox(m.positions);
+    joined.models.push_back(model);
+  }
+  joined.mesh = std::move(mesh);
+  return joined;
+}
+
+void Scene::numberFaces() {
+  meshFaces_ = std::max<uint32_t>(1, uint32_t(mesh->faceCount()));
+  uniform = true;
+  uint64_t faces = 0;
+  for (SceneInstance& instance : instances) {
+    const SceneModel& m = models[instance.part];
+    uniform &= m.faceBegin == 0 && m.faceEnd == mesh->faceCount();
+    instance.firstId = uint32_t(std::min<uint64_t>(faces, kMaxSceneFaces));
+    faces += m.faceEnd - m.faceBegin;
+  }
   // Face ids count across instances (docs/design.md, Faces, ids and shading): checked in 64
-  // bits before any id is made.
-  const uint64_t instances = settings.grid ? uint64_t(settings.grid->instanceCount()) : 1;
-  const uint64_t faces = uint64_t(mesh->faceCount()) * instances;
+  // bits before any id is used.
+  if (faces > kMaxSceneFaces) {
+    throw InputError("scene '" + settings.name + "': " + std::to_string(instances.size()) +
+                     " instances make " + std::to_string(faces) + " faces, over the " +
+                     std::to_string(kMaxSceneFaces) + " face ids a frame can tell apart");
+  }
+  faceCount_ = uint32_t(faces);
+}
+
+FaceRef Scene::locateSearch(uint32_t faceId) const {
+  const auto after = std::upper_bound(
+      instances.begin(), instances.end(), faceId,
+      [](uint32_t id, const SceneInstance& instance) { return id < instance.firstId; });
+  const uint32_t k = uint32_t(after - instances.begin()) - 1;
+  return {k, models[instances[k].part].faceBegin + (faceId - instances[k].firstId)};
+}
+
+Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh, cv::Mat texture) {
+  const uint64_t cells = settings.grid ? uint64_t(settings.grid->instanceCount()) : 1;
+  const uint64_t faces = uint64_t(mesh->faceCount()) * cells;
   if (faces > kMaxSceneFaces) {
     throw InputError("scene '" + settings.name + "': " + std::to_string(mesh->faceCount()) +
-                     " faces x " + std::to_string(instances) +
-                     " instances = " + std::to_string(faces) + " faces, over the " +
-                     std::to_string(kMaxSceneFaces) + " face ids a frame can tell apart");
+                     " faces x " + std::to_string(cells) + " instances = " + std::to_string(faces) +
+                     " faces, over the " + std::to_string(kMaxSceneFaces) +
+                     " face ids a frame can tell apart");
   }
   Scene scene;
   scene.settings = settings;
   scene.mesh = std::move(mesh);
-  scene.instanceOffsets = gridOffsets(settings);
-  scene.meshBox = boundingBox(scene.mesh->positions);
-
-  // Bounding sphere: centre of the bounding box of all instances, radius to the farthest
-  // vertex. Instances only translate, so the extreme instances are the corners of the grid.
+  scene.models.push_back(wholeMesh(*scene.mesh));
+  scene.meshBox = scene.models.front().box;
+  const std::vector<Vec3> offsets = gridOffsets(settings);
   const Mat4 rot = rotation(settings.angle, settings.axis);
-  std::vector<Vec3> rotated;
-  rotated.reserve(scene.mesh->positions.size());
-  for (const Vec3& p : scene.mesh->positions) rotated.push_back(transformPoint(rot, p));
-  const Box3 box = boundingBox(rotated);
-  Vec3 offLo = scene.instanceOffsets.front(), offHi = scene.instanceOffsets.back();
-  for (int a = 0; a < 3; ++a) {
-    if (offLo[a] > offHi[a]) std::swap(offLo[a], offHi[a]);
+  for (const Vec3& offset : offsets) {
+    SceneInstance instance;
+    instance.model = translation(offset) * rot;  // the rotation, then the grid offset
+    scene.instances.push_back(instance);
   }
-  if (!rotated.empty()) {
-    scene.boundsCentre = ((box.lo + offLo) + (box.hi + offHi)) * 0.5;
-    // The farthest of the 8 extreme instances for each vertex, axis by axis: the squared
-    // distance is a sum over the axes, whose terms each pick the larger of two offsets, and a
-    // rounded sum never shrinks when a term grows, so this is the 8 corners' largest exactly.
-    double r2 = 0.0;
-    for (const Vec3& p : rotated) {
-      double d2 = 0.0;
-      for (int a = 0; a < 3; ++a) {
-        const double lo = (p[a] + offLo[a]) - scene.boundsCentre[a];
-        const double hi = (p[a] + offHi[a]) - scene.boundsCentre[a];
-        d2 += std::max(lo * lo, hi * hi);
-      }
-      r2 = std::max(r2, d2);
-    }
-    scene.boundsRadius = std::sqrt(r2);
-  }
+  scene.numberFaces();
+  gridBounds(scene, offsets);
+  scene.texture = std::move(texture);
+  return scene;
+}
 
+Scene makeScene(const SceneSettings& settings, SceneMeshes meshes,
+                const std::vector<uint32_t>& objectModel, cv::Mat texture) {
+  if (settings.objects.empty()) return makeScene(settings, meshes.mesh, std::move(texture));
+  Scene scene;
+  scene.settings = settings;
+  scene.mesh = std::move(meshes.mesh);
+  scene.models = std::move(meshes.models);
+  scene.meshBox = boundingBox(scene.mesh->positions);
+  const std::vector<Vec3> offsets = gridOffsets(settings);
+  const Mat4 rot = rotation(settings.angle, settings.axis);
+  std::vector<Mat4> placements;
+  for (const SceneObject& o : settings.objects)
+    placements.push_back(translation(o.translate) * rotation(o.angle, o.axis) * scaling(o.scale));
+  uint64_t faces = 0;
+  for (size_t o = 0; o < settings.objects.size(); ++o) {
+    const SceneModel& m = scene.models[objectModel[o]];
+    faces += uint64_t(m.faceEnd - m.faceBegin);
+  }
+  if (faces * offsets.size() > kMaxSceneFaces) {
+    throw InputError(
+        "scene '" + settings.name + "': " + std::to_string(faces) + " faces x " +
+        std::to_string(offsets.size()) + " grid cells = " + std::to_string(faces * offsets.size()) +
+        " faces, over the " + std::to_string(kMaxSceneFaces) + " face ids a frame can tell apart");
+  }
+  for (const Vec3& offset : offsets) {
+    const Mat4 cell = translation(offset) * rot;
+    for (size_t o = 0; o < settings.objects.size(); ++o) {
+      SceneInstance instance;
+      instance.model = cell * placements[o];
+      instance.part = objectModel[o];
+      if (settings.objects[o].color) {
+        instance.colored = true;
+        instance.color = cv::Vec3f(*settings.objects[o].color);
+      }
+      scene.instances.push_back(instance);
+    }
+  }
+  scene.numberFaces();
+  instanceBounds(scene);
   scene.texture = std::move(texture);
   return scene;
 }
 
 uint64_t triangleCount(const Scene& scene) {
-  uint64_t n = 0;
   const Mesh& m = *scene.mesh;
-  for (size_t f = 0; f < m.faceCount(); ++f) {
-    const uint32_t c = m.cornerCount(f);
-    if (c >= 3) n += c - 2;
+  std::vector<uint64_t> perModel;
+  for (const SceneModel& model : scene.models) {
+    uint64_t n = 0;
+    for (uint32_t f = model.faceBegin; f < model.faceEnd; ++f) {
+      const uint32_t c = m.cornerCount(f);
+      if (c >= 3) n += c - 2;
+    }
+    perModel.push_back(n);
   }
-  return n * scene.instanceCount();
+  uint64_t n = 0;
+  for (const SceneInstance& instance : scene.instances) n += perModel[instance.part];
+  return n;
 }
 
 }  // namespace zrender

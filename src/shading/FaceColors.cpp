@@ -23,7 +23,8 @@ void FaceColors::begin(const std::vector<Mat4>& modelView, uint32_t background,
     frame_ = 0;
   }
   ++frame_;
-  sharedRotation_ = true;
+  // Only where every instance is the whole mesh can a mesh face's color serve every instance.
+  sharedRotation_ = scene_.uniform;
   for (const Mat4& mv : modelView)
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
@@ -54,9 +55,9 @@ uint32_t FaceColors::color(uint32_t faceId) {
 uint32_t FaceColors::uncachedColor(uint32_t faceId) const {
   if (mode_ == ShadingMode::Id) return idColor(faceId);
   if (mode_ == ShadingMode::Random) return randomFaceColor(faceId);
-  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
-  const uint32_t instance = faceId / nf, local = faceId % nf;
-  const Mat4& modelView = (*modelView_)[instance];
+  const FaceRef face = scene_.locate(faceId);
+  const uint32_t local = face.meshFace;
+  const Mat4& modelView = (*modelView_)[face.instance];
   if (mode_ == ShadingMode::Normal) return normalColor(modelView, local);
   if (mode_ != ShadingMode::Flat) return 0;
   // Lambert term of the face normal under a light at the eye, seen from the centroid.
@@ -140,11 +141,10 @@ FaceColors::Lookup FaceColors::prepare(size_t samples, const Threads* threads) {
   // its leaf order, unrelated to their ids, so the normals and table entries they need are
   // fetched a few faces ahead (32 ahead measured a little better than 8 and 16).
   constexpr size_t kAhead = 32;
-  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   for (; tableFaces_ < faces.size(); ++tableFaces_) {
     if (tableFaces_ + kAhead < faces.size()) {
       const uint32_t ahead = faces[tableFaces_ + kAhead].id;
-      __builtin_prefetch(&faceNormals_[ahead % nf]);
+      __builtin_prefetch(&faceNormals_[scene_.locate(ahead).meshFace]);
       __builtin_prefetch(&table_[size_t(ahead) + 1], 1);
     }
     table_[size_t(faces[tableFaces_].id) + 1] = uncachedColor(faces[tableFaces_].id);

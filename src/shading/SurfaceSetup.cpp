@@ -48,8 +48,9 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
     FaceData& face = faces_[f];
     face.geometric = cv::Vec3f(faceNormals[f]);
     const int32_t material = f < mesh.faceMaterial.size() ? mesh.faceMaterial[f] : -1;
-    face.base =
-        material >= 0 ? mesh.materials[size_t(material)].diffuse : cv::Vec3f(0.8f, 0.8f, 0.8f);
+    face.base = f < mesh.faceColors.size() ? mesh.faceColors[f]
+                : material >= 0            ? mesh.materials[size_t(material)].diffuse
+                                           : cv::Vec3f(0.8f, 0.8f, 0.8f);
     face.textured = texture && allUvs;
   }
   const cv::Mat& t = scene.texture;
@@ -108,10 +109,9 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples) {
   if (totalFaces(parts) * 16 > samples) return false;
   batched_ = true;
   const Mesh& mesh = *scene_.mesh;
-  const uint32_t nf = uint32_t(mesh.faceCount());
   constexpr size_t kAhead = 8;
   const auto prefetch = [&](uint32_t faceId) {
-    const uint32_t local = faceId % nf;
+    const uint32_t local = scene_.locate(faceId).meshFace;
     __builtin_prefetch(&faces_[local]);
     __builtin_prefetch(&cache_[faceId]);
     const char* first = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local]);
@@ -168,9 +168,10 @@ void SurfaceSetup::setUpVisible(const FrameBuffer& fb, const FaceParts& faces,
 
 uint32_t SurfaceSetup::setUp(uint32_t faceId) {
   const Mesh& mesh = *scene_.mesh;
-  const uint32_t nf = uint32_t(mesh.faceCount());
-  const uint32_t instance = faceId / nf, local = faceId % nf;
-  const Mat4& mv = (*modelView_)[instance];
+  const FaceRef ref = scene_.locate(faceId);
+  const uint32_t local = ref.meshFace;
+  const SceneInstance& instance = scene_.instances[ref.instance];
+  const Mat4& mv = (*modelView_)[ref.instance];
   const uint32_t n = mesh.cornerCount(local);
   const CornerData* corners = corners_.data() + mesh.faceStart[local];
   const FaceData& data = faces_[local];
@@ -188,7 +189,9 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
       mode_ != ShadingMode::Normal && transformDirection(mv, Vec3(data.geometric)).dot(-p0) < 0.0;
   if (flip)
     for (Vec3& normal : cornerNormal_) normal = -normal;
-  for (int i = 0; i < 3; ++i) face.base[i] = data.base[i] * 255.0f;
+  // An object's own color takes the place of its faces' (SceneObject::color).
+  const cv::Vec3f& base = instance.colored ? instance.color : data.base;
+  for (int i = 0; i < 3; ++i) face.base[i] = base[i] * 255.0f;
   face.textured = data.textured;
   // The planes' origin: the sample of the first corner when it lies in front of the eye
   // (clamped to the image), else the image's centre. From the face alone, so that it is the

@@ -10,10 +10,7 @@ namespace zrender {
 
 FaceTransformer::FaceTransformer(const Scene& scene, int sampleScale, bool cull,
                                  FaceBatches batches)
-    : scene_(scene),
-      layout_(*scene.mesh, scene.instanceCount(), batches),
-      assembler_(sampleScale, cull),
-      avx2_(cpuHasAvx2()) {
+    : scene_(scene), layout_(scene, batches), assembler_(sampleScale, cull), avx2_(cpuHasAvx2()) {
   viewport_.scale = sampleScale;
 }
 
@@ -51,8 +48,13 @@ double FaceTransformer::transformMs() const {
 }
 
 InstanceView FaceTransformer::viewOfInstance(uint32_t instance) const {
-  if (layout_.slotPositions().empty()) return InstanceView();
-  return zrender::viewOfInstance(mvp_[instance], layout_.bounds(), viewport_);
+  const MeshLayout::Part& part = layout_.part(scene_.instances[instance].part);
+  if (part.slotBegin == part.slotEnd) return InstanceView();
+  return zrender::viewOfInstance(mvp_[instance], part.bounds, viewport_);
+}
+
+const MeshLayout::Part& FaceTransformer::partOf(uint32_t instance) const {
+  return layout_.part(scene_.instances[instance].part);
 }
 
 void FaceTransformer::pull(const FaceRequest& request, FrameGeometry& out,
@@ -107,7 +109,9 @@ void FaceTransformer::projectInstance(uint32_t instance) {
   const size_t slots = layout_.slotPositions().size();
   instanceState_.resize(slots);
   instanceWindow_.resize(slots);
-  projectSlots(instance, 0, slots, instanceState_.data(), instanceWindow_.data());
+  const MeshLayout::Part& part = partOf(instance);
+  projectSlots(instance, part.slotBegin, part.slotEnd, instanceState_.data(),
+               instanceWindow_.data());
 }
 
 void FaceTransformer::assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,
@@ -116,13 +120,14 @@ void FaceTransformer::assembleFaces(uint32_t instance, uint32_t faceBegin, uint3
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
   assembler.setVertices(vertices);
-  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
   const uint32_t* faceStart = scene_.mesh->faceStart.data();
   const uint32_t* cornerSlots = layout_.cornerSlots().data();
+  // Face f of the mesh is this instance's id firstId + (f - its model's first face).
+  const uint32_t idOffset = scene_.instances[instance].firstId - scene_.modelOf(instance).faceBegin;
   for (uint32_t f = faceBegin; f < faceEnd; ++f) {
     const uint32_t first = faceStart[f];
-    assembler.append(instance * nf + f, FaceCorners{cornerSlots + first, 0},
-                     faceStart[f + 1] - first, out);
+    assembler.append(idOffset + f, FaceCorners{cornerSlots + first, 0}, faceStart[f + 1] - first,
+                     out);
   }
 }
 
@@ -154,12 +159,14 @@ void appendChunk(const FrameGeometry& chunk, const size_t base[3], FrameGeometry
 uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filter,
                                           std::vector<FrameGeometry>& chunks) {
   const Threads& threads = *threads_;
-  const uint32_t nf = uint32_t(scene_.mesh->faceCount());
-  // A grid: one chunk per instance, each projecting its own vertices. One instance: its
-  // vertices projected by all threads, then its faces in chunks.
+  // Several instances: one chunk per instance, each projecting its own vertices. One instance:
+  // its vertices projected by all threads, then its faces in chunks.
   const bool single = instance >= 0 || scene_.instanceCount() == 1;
   const uint32_t only = instance >= 0 ? uint32_t(instance) : 0;
-  const uint32_t count = single ? (nf + kChunkFaces - 1) / kChunkFaces : scene_.instanceCount();
+  const SceneModel& onlyModel = scene_.modelOf(only);
+  const uint32_t onlyFaces = onlyModel.faceEnd - onlyModel.faceBegin;
+  const uint32_t count =
+      single ? (onlyFaces + kChunkFaces - 1) / kChunkFaces : scene_.instanceCount();
   if (chunks.size() < count) chunks.resize(count);
   const InstanceView onlyView = viewOfInstance(only);
   HiddenTiles hidden;
@@ -169,8 +176,10 @@ uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filt
     const size_t slots = layout_.slotPositions().size();
     instanceState_.resize(slots);
     instanceWindow_.resize(slots);
-    threads.forRanges(slots, 4096, [&](size_t begin, size_t end) {
-      projectSlots(only, begin, end, instanceState_.data(), instanceWindow_.data());
+    const MeshLayout::Part& part = partOf(only);
+    threads.forRanges(part.slotEnd - part.slotBegin, 4096, [&](size_t begin, size_t end) {
+      projectSlots(only, part.slotBegin + begin, part.slotBegin + end, instanceState_.data(),
+                   instanceWindow_.data());
     });
   }
   threads.forEach(count, [&](size_t c) {
@@ -182,15 +191,15 @@ uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filt
     if (view.outside) {
       // Every face would be clipped away (those of fewer than 3 corners: degenerate).
       if (single && c > 0) return;
-      chunk.counters.clippedAway += layout_.instanceTriangles();
-      chunk.counters.degenerate += layout_.instanceDegenerate();
+      chunk.counters.clippedAway += partOf(k).triangles;
+      chunk.counters.degenerate += partOf(k).degenerate;
       return;
     }
     if (single) {
-      const uint32_t begin = uint32_t(c) * kChunkFaces;
+      const uint32_t begin = onlyModel.faceBegin + uint32_t(c) * kChunkFaces;
       w.assembler.setFilter(filter, hidden);
       assembleFaces(
-          only, begin, std::min(nf, begin + kChunkFaces),
+          only, begin, std::min(onlyModel.faceEnd, begin + kChunkFaces),
           VertexView{instanceState_.data(), instanceWindow_.data(), nullptr, nullptr, only},
           w.assembler, chunk);
       w.assembler.setFilter(nullptr, HiddenTiles());
@@ -199,9 +208,12 @@ uint32_t FaceTransformer::transformChunks(int64_t instance, TriangleFilter* filt
     const size_t slots = layout_.slotPositions().size();
     w.state.resize(slots);
     w.window.resize(slots);
-    projectSlots(k, 0, slots, w.state.data(), w.window.data());
-    assembleFaces(k, 0, nf, VertexView{w.state.data(), w.window.data(), nullptr, nullptr, k},
-                  w.assembler, chunk);
+    const MeshLayout::Part& part = partOf(k);
+    projectSlots(k, part.slotBegin, part.slotEnd, w.state.data(), w.window.data());
+    const SceneModel& model = scene_.modelOf(k);
+    assembleFaces(k, model.faceBegin, model.faceEnd,
+                  VertexView{w.state.data(), w.window.data(), nullptr, nullptr, k}, w.assembler,
+                  chunk);
   });
   return count;
 }
@@ -242,8 +254,8 @@ void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, Triang
   const InstanceView view = viewOfInstance(instance);
   if (view.outside) {
     // Every face would be clipped away (those of fewer than 3 corners: degenerate).
-    out.counters.clippedAway += layout_.instanceTriangles();
-    out.counters.degenerate += layout_.instanceDegenerate();
+    out.counters.clippedAway += partOf(instance).triangles;
+    out.counters.degenerate += partOf(instance).degenerate;
     return;
   }
   assembler_.setFilter(filter, filter && view.nearest > 0.0f
@@ -253,13 +265,14 @@ void FaceTransformer::pullInstance(uint32_t instance, FrameGeometry& out, Triang
   assembler_.setVertices(
       VertexView{instanceState_.data(), instanceWindow_.data(), nullptr, nullptr, instance});
   const Mesh& mesh = *scene_.mesh;
-  const uint32_t nf = uint32_t(mesh.faceCount());
+  const SceneModel& model = scene_.modelOf(instance);
+  const uint32_t idOffset = scene_.instances[instance].firstId - model.faceBegin;
   const uint32_t* faceStart = mesh.faceStart.data();
   const uint32_t* cornerSlots = layout_.cornerSlots().data();
-  for (uint32_t f = 0; f < nf; ++f) {
+  for (uint32_t f = model.faceBegin; f < model.faceEnd; ++f) {
     const uint32_t first = faceStart[f];
-    assembler_.append(instance * nf + f, FaceCorners{cornerSlots + first, 0},
-                      faceStart[f + 1] - first, out);
+    assembler_.append(idOffset + f, FaceCorners{cornerSlots + first, 0}, faceStart[f + 1] - first,
+                      out);
   }
   assembler_.setFilter(nullptr, HiddenTiles());
 }
@@ -311,12 +324,12 @@ void FaceTransformer::pullBatch(uint32_t batch, FrameGeometry& out) {
   out.width = viewport_.width * viewport_.scale;
   out.height = viewport_.height * viewport_.scale;
   const Mesh& mesh = *scene_.mesh;
-  const uint32_t nf = uint32_t(mesh.faceCount());
   const uint32_t* local = b.corners.data() + b.cornerStart[batch];
   for (uint32_t f = b.faceStart[batch]; f < b.faceStart[batch + 1]; ++f) {
     const uint32_t faceId = b.faces[f];
-    // The stored count spares a division on the face's path (0: too many to store).
-    const uint32_t n = b.faceCorners[f] ? b.faceCorners[f] : mesh.cornerCount(faceId % nf);
+    // The stored count spares a look-up on the face's path (0: too many to store).
+    const uint32_t n =
+        b.faceCorners[f] ? b.faceCorners[f] : mesh.cornerCount(scene_.locate(faceId).meshFace);
     assembler.append(faceId, FaceCorners{local, 0}, n, out);
     local += n;
   }

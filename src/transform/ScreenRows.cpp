@@ -7,10 +7,10 @@ namespace zrender {
 
 RowSpan screenRows(const Scene& scene, const Camera& camera, int heightSamples) {
   const RowSpan all{0, std::max(heightSamples, 0)};
-  const Box3& box = scene.meshBox;
   const Mat4 viewProjection = camera.projection * camera.view;
   double y0 = HUGE_VAL, y1 = -HUGE_VAL;  // samples, down
   for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
+    const Box3& box = scene.modelOf(k).box;
     const Mat4 mvp = viewProjection * scene.modelMatrix(k);
     for (int c = 0; c < 8; ++c) {
       const Vec4 p = mvp * Vec4(c & 1 ? box.hi[0] : box.lo[0], c & 2 ? box.hi[1] : box.lo[1],

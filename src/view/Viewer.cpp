@@ -43,12 +43,11 @@ Viewer::Viewer(const Scene& loaded, const ViewerOptions& options, std::ostream& 
 void Viewer::rebuild(ViewEffect effect) {
   const ViewState& s = controls_.state();
   if (effect == ViewEffect::Scene || !scene_) {
-    renderer_.reset();  // it refers to the scene
-    SceneSettings settings = loaded_.settings;
-    settings.shading = s.shading;
-    settings.msaa = s.msaa;
-    settings.cull = s.cull;
-    scene_ = std::make_unique<Scene>(makeScene(settings, loaded_.mesh, loaded_.texture));
+    renderer_.reset();                          // it refers to the scene
+    scene_ = std::make_unique<Scene>(loaded_);  // shares the mesh and the texture
+    scene_->settings.shading = s.shading;
+    scene_->settings.msaa = s.msaa;
+    scene_->settings.cull = s.cull;
   }
   renderer_ = std::make_unique<Renderer>(*scene_, s.algorithm, options_.threads);
 }

@@ -101,8 +101,8 @@ void HierarchicalAlgorithm::orderInstances(const FrameInput& input) {
   instances_.resize(scene.instanceCount());
   std::vector<double> distance(instances_.size());
   for (uint32_t k = 0; k < scene.instanceCount(); ++k) {
-    const Mat4 model = scene.modelMatrix(k);
-    const Vec3 centre = scene.meshBox.centre();
+    const Mat4& model = scene.modelMatrix(k);
+    const Vec3 centre = scene.modelOf(k).box.centre();
     const Vec4 c = model * Vec4(centre[0], centre[1], centre[2], 1.0);
     const Vec3 d(c[0] - eye[0], c[1] - eye[1], c[2] - eye[2]);
     distance[k] = d.dot(d);

@@ -42,24 +42,49 @@ class Builder {
  public:
   Builder(const Scene& scene, uint32_t leafFaces, std::vector<OctreeNode>& nodes,
           std::vector<uint32_t>& faces)
-      : mesh_(*scene.mesh), leafFaces_(std::max(leafFaces, 1u)), nodes_(nodes), faces_(faces) {
-    // Instances differ by a translation only (Scene::modelMatrix: the rotation, then the grid
+      : scene_(scene),
+        mesh_(*scene.mesh),
+        leafFaces_(std::max(leafFaces, 1u)),
+        nodes_(nodes),
+        faces_(faces) {
+    // A grid's instances differ by a translation only (Scene: the rotation, then the grid
     // offset), so the rotated positions are shared: world = rotated + offset, equal to the
-    // transformer's model matrix product up to rounding, which the box margin covers.
-    const Mat4 rot = rotation(scene.settings.angle, scene.settings.axis);
-    rotated_.reserve(mesh_.positions.size());
-    for (const Vec3& p : mesh_.positions) rotated_.push_back(transformPoint(rot, p));
-    offsets_ = scene.instanceOffsets;
-    facesPerInstance_ = uint32_t(mesh_.faceCount());
+    // transformer's model matrix product up to rounding, which the box margin covers. Objects
+    // placed otherwise have each vertex through their own matrix.
+    const Mat4& first = scene.modelMatrix(0);
+    shared_ = scene.uniform;
+    for (const SceneInstance& instance : scene.instances) {
+      for (int r = 0; r < 3 && shared_; ++r)
+        for (int c = 0; c < 3; ++c) shared_ &= instance.model(r, c) == first(r, c);
+      offsets_.emplace_back(instance.model(0, 3), instance.model(1, 3), instance.model(2, 3));
+    }
+    if (shared_) {
+      Mat4 rot = first;  // the shared rotation (and scale)
+      rot(0, 3) = rot(1, 3) = rot(2, 3) = 0.0;
+      rotated_.reserve(mesh_.positions.size());
+      for (const Vec3& p : mesh_.positions) rotated_.push_back(transformPoint(rot, p));
+    }
   }
 
   void build() {
-    const uint32_t total = facesPerInstance_ * uint32_t(offsets_.size());
+    const uint32_t total = scene_.faceCount();
     if (total == 0) return;
 
-    // Scene bounds, for the Morton grid: every instance is the rotated mesh plus its offset.
-    const Box3 mesh = boundingBox(rotated_), offsets = boundingBox(offsets_);
-    const Vec3 lo = mesh.lo + offsets.lo, hi = mesh.hi + offsets.hi;
+    // Scene bounds, for the Morton grid.
+    Vec3 lo, hi;
+    if (shared_) {  // every instance is the rotated mesh plus its offset
+      const Box3 mesh = boundingBox(rotated_), offsets = boundingBox(offsets_);
+      lo = mesh.lo + offsets.lo, hi = mesh.hi + offsets.hi;
+    } else {
+      lo = Vec3(HUGE_VAL, HUGE_VAL, HUGE_VAL), hi = -lo;
+      for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
+        const SceneModel& m = scene_.modelOf(k);
+        for (uint32_t p = m.positionBegin; p < m.positionEnd; ++p) {
+          const Vec3 w = world(k, p);
+          for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], w[a]), hi[a] = std::max(hi[a], w[a]);
+        }
+      }
+    }
     double side = 0.0, magnitude = 0.0;
     for (int a = 0; a < 3; ++a) {
       side = std::max(side, hi[a] - lo[a]);
@@ -76,15 +101,21 @@ class Builder {
     // Morton code of every face's centroid, sorted with the face id as the tie-break.
     std::vector<uint64_t> keys(total);
     const double top = double((1 << Octree::kMaxDepth) - 1);
-    for (uint32_t k = 0; k < offsets_.size(); ++k) {
-      for (uint32_t f = 0; f < facesPerInstance_; ++f) {
-        const uint32_t id = k * facesPerInstance_ + f;
+    for (uint32_t k = 0; k < scene_.instanceCount(); ++k) {
+      const SceneModel& m = scene_.modelOf(k);
+      for (uint32_t f = m.faceBegin; f < m.faceEnd; ++f) {
+        const uint32_t id = scene_.instances[k].firstId + (f - m.faceBegin);
         const uint32_t n = mesh_.cornerCount(f);
         const Corner* c = mesh_.faceCorners(f);
         Vec3 centroid(0, 0, 0);
-        for (uint32_t i = 0; i < n; ++i) centroid += rotated_[size_t(c[i].position)];
-        if (n > 0) centroid *= 1.0 / n;
-        centroid += offsets_[k];
+        if (shared_) {
+          for (uint32_t i = 0; i < n; ++i) centroid += rotated_[size_t(c[i].position)];
+          if (n > 0) centroid *= 1.0 / n;
+          centroid += offsets_[k];
+        } else {
+          for (uint32_t i = 0; i < n; ++i) centroid += world(k, uint32_t(c[i].position));
+          if (n > 0) centroid *= 1.0 / n;
+        }
         uint32_t q[3];
         for (int a = 0; a < 3; ++a) {
           double cell = std::floor((centroid[a] - origin_[a]) * cellScale_);
@@ -178,16 +209,14 @@ class Builder {
     for (uint32_t i = node.faceBegin; i < node.faceEnd; ++i) {
       const uint32_t id = faces_[i];
       node.minFace = std::min(node.minFace, id);
-      const uint32_t k = id / facesPerInstance_, f = id % facesPerInstance_;
-      const Vec3& offset = offsets_[k];
-      const uint32_t n = mesh_.cornerCount(f);
-      const Corner* c = mesh_.faceCorners(f);
+      const FaceRef face = scene_.locate(id);
+      const uint32_t n = mesh_.cornerCount(face.meshFace);
+      const Corner* c = mesh_.faceCorners(face.meshFace);
       for (uint32_t j = 0; j < n; ++j) {
-        const Vec3& p = rotated_[size_t(c[j].position)];
+        const Vec3 w = world(face.instance, uint32_t(c[j].position));
         for (int a = 0; a < 3; ++a) {
-          const double v = p[a] + offset[a];
-          lo[a] = std::min(lo[a], v);
-          hi[a] = std::max(hi[a], v);
+          lo[a] = std::min(lo[a], w[a]);
+          hi[a] = std::max(hi[a], w[a]);
         }
       }
     }
@@ -201,14 +230,23 @@ class Builder {
     }
   }
 
+  // Position p of instance k in world space.
+  Vec3 world(uint32_t k, uint32_t p) const {
+    if (!shared_) return transformPoint(scene_.modelMatrix(k), mesh_.positions[p]);
+    const Vec3& r = rotated_[p];
+    const Vec3& offset = offsets_[k];
+    return Vec3(r[0] + offset[0], r[1] + offset[1], r[2] + offset[2]);
+  }
+
+  const Scene& scene_;
   const Mesh& mesh_;
   uint32_t leafFaces_;  // a node with at most this many faces is a leaf
   std::vector<OctreeNode>& nodes_;
   std::vector<uint32_t>& faces_;
-  std::vector<Vec3> rotated_;  // mesh positions after the model rotation
-  std::vector<Vec3> offsets_;  // per instance
+  bool shared_ = false;        // every instance: the whole mesh, the same rotation
+  std::vector<Vec3> rotated_;  // with shared_: mesh positions after the model rotation
+  std::vector<Vec3> offsets_;  // per instance: its matrix's translation
   std::vector<uint32_t> codes_;
-  uint32_t facesPerInstance_ = 0;
   Vec3 origin_;
   double cellScale_ = 1.0, side_ = 1.0;
   float margin_ = 0.0f;

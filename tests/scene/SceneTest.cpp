@@ -51,7 +51,8 @@ TEST(Scene, TheBoundingSphereReachesTheFarthestVertexOfAnyInstance) {
     for (uint32_t n = 0; n < scene.instanceCount(); ++n) {
       for (const Vec3& p : mesh->positions) {
         const Vec3 rotated = transformPoint(rotation(s.angle, s.axis), p);
-        const Vec3 d = rotated + scene.instanceOffsets[n] - scene.boundsCentre;
+        const Mat4& m = scene.modelMatrix(n);  // its translation: the grid offset
+        const Vec3 d = rotated + Vec3(m(0, 3), m(1, 3), m(2, 3)) - scene.boundsCentre;
         farthest = std::max(farthest, d.dot(d));
       }
     }

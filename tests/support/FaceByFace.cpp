@@ -5,7 +5,7 @@
 namespace zrender::test {
 
 FaceByFace::FaceByFace(const Scene& scene, int sampleScale, bool cull)
-    : scene_(scene), layout_(*scene.mesh, scene.instanceCount()), assembler_(sampleScale, cull) {
+    : scene_(scene), layout_(scene), assembler_(sampleScale, cull) {
   viewport_.scale = sampleScale;
 }
 
@@ -25,8 +25,8 @@ void FaceByFace::beginFrame(const Camera& camera) {
 
 void FaceByFace::transformFace(uint32_t faceId, FrameGeometry& out) {
   const Mesh& mesh = *scene_.mesh;
-  const uint32_t nf = uint32_t(mesh.faceCount());
-  const uint32_t k = faceId / nf, f = faceId % nf, n = mesh.cornerCount(f);
+  const FaceRef face = scene_.locate(faceId);
+  const uint32_t k = face.instance, f = face.meshFace, n = mesh.cornerCount(f);
   state_.assign(n, VertexState());
   window_.assign(n, Vec3());
   slot_.resize(n);

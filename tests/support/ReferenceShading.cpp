@@ -95,7 +95,9 @@ uint32_t ReferenceSurfaceShading::faceShadeIndex(uint32_t faceId) {
   const Vec3 geometric = transformDirection(mv, faceNormals_[local]);
   fs.flip = geometric.dot(-cornerPos_[fs.first]) < 0.0;
   const int32_t material = local < mesh.faceMaterial.size() ? mesh.faceMaterial[local] : -1;
-  fs.base = material >= 0 ? mesh.materials[size_t(material)].diffuse : cv::Vec3f(0.8f, 0.8f, 0.8f);
+  fs.base = local < mesh.faceColors.size() ? mesh.faceColors[local]
+            : material >= 0                ? mesh.materials[size_t(material)].diffuse
+                                           : cv::Vec3f(0.8f, 0.8f, 0.8f);
   if (mode_ == ShadingMode::Texture && !scene_.texture.empty() && allUvs)
     fs.base = cv::Vec3f(-1, -1, -1);  // marker: sample the texture
   entry.stamp = frame_;

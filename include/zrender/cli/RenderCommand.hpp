@@ -12,7 +12,8 @@ namespace zrender {
 
 // `zrender SCENE [options]`, after parsing.
 struct RenderOptions {
-  std::string scene;  // a settings key or a model file
+  std::string scene;                    // a settings key or a model file
+  std::vector<std::string> moreModels;  // further model files: one scene of them all
   std::string algorithm = "zbuffer";
   std::optional<std::filesystem::path> settings, output, depth, ids;
   int repeat = 1;

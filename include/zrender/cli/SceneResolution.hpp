@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "zrender/base/Error.hpp"
 #include "zrender/scene/SceneSettings.hpp"
@@ -26,10 +27,12 @@ struct SceneOverrides {
 
 // The scene to render: the settings entry named `scene` (or, when `scene` is a model file and
 // not a key, that model with the defaults and fit), with the overrides applied and validated.
-// Resolves the settings file as docs/design.md, Command line says. Throws InputError.
+// Resolves the settings file as docs/design.md, Command line says. With `moreModels`, `scene` and
+// they are model files, the objects of one scene, each at its own coordinates. Throws InputError.
 SceneSettings resolveScene(const std::string& scene,
                            const std::optional<std::filesystem::path>& settingsOption,
-                           const SceneOverrides& overrides, Warnings& warnings);
+                           const SceneOverrides& overrides, Warnings& warnings,
+                           const std::vector<std::string>& moreModels = {});
 
 // The settings file used when --settings is absent: ./settings.json, else, for an executable in
 // its build tree (CMakeCache.txt beside it or one folder up), the source tree's. Empty when

@@ -15,9 +15,14 @@ class Threads;
 // drawn without it.
 cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings);
 
-// The scene of `settings`: its model file, its texture, its instances. Throws InputError. With
-// `threads` (more than one), a `texture` key's image is read while the model loads.
+// The scene of `settings`: its model file (or its objects' files), its texture, its instances.
+// Throws InputError. With `threads` (more than one), a `texture` key's image is read while the
+// model loads.
 Scene loadScene(const SceneSettings& settings, Warnings& warnings,
                 const Threads* threads = nullptr);
+// The scene of `settings.objects`: each distinct file read once, then joined into one mesh that
+// the objects' instances share.
+Scene loadObjects(const SceneSettings& settings, Warnings& warnings,
+                  const Threads* threads = nullptr);
 
 }  // namespace zrender

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -20,6 +21,17 @@ struct Grid {
   int instanceCount() const { return count[0] * count[1] * count[2]; }
 };
 
+// One object of a scene of many (settings key `objects`, or a model file of several on the command
+// line): a model file placed in the world by scale, then rotation, then translation.
+struct SceneObject {
+  std::filesystem::path path;          // resolved against the settings file's folder
+  cv::Vec3d translate{0.0, 0.0, 0.0};  // world units
+  double angle = 0.0;                  // degrees about axis
+  cv::Vec3d axis{0.0, 1.0, 0.0};
+  cv::Vec3d scale{1.0, 1.0, 1.0};
+  std::optional<cv::Vec3d> color;  // linear 0..1 RGB: its faces' base color, else theirs
+};
+
 // The camera values `fit` leaves as they are. A settings scene's "fit": true and --fit frame
 // the model on their own (docs/design.md, Camera and transforms: none kept); a model file named on
 // the command line is framed around the camera options the user typed (docs: the camera rule).
@@ -31,7 +43,10 @@ struct FitKeeps {
 struct SceneSettings {
   std::string name;
   std::filesystem::path modelPath;  // resolved against the settings file's folder
-  int width = 1024;                 // pixels, 1..16384
+  // A scene of many objects (docs/design.md, Settings: `objects`); when there are any, they are
+  // the scene and modelPath is the first one's path (for messages).
+  std::vector<SceneObject> objects;
+  int width = 1024;  // pixels, 1..16384
   int height = 1024;
   std::optional<cv::Vec3d> eye;  // world space; required unless fit is on
   cv::Vec3d target{0.0, 0.0, 0.0};

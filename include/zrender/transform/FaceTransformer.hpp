@@ -64,7 +64,9 @@ class FaceTransformer : public GeometrySource {
   // cleared first); returns their number.
   uint32_t transformChunks(int64_t instance, TriangleFilter* filter,
                            std::vector<FrameGeometry>& chunks);
-  // A chunk's part of pullParallel: faces [faceBegin, faceEnd) of `instance`, whose vertices
+  // The layout of `instance`'s model: its slots, bounds and counts.
+  const MeshLayout::Part& partOf(uint32_t instance) const;
+  // A chunk's part of pullParallel: mesh faces [faceBegin, faceEnd) of `instance`, whose vertices
   // `vertices` holds, by `assembler`.
   void assembleFaces(uint32_t instance, uint32_t faceBegin, uint32_t faceEnd,
                      const VertexView& vertices, FaceAssembler& assembler,

@@ -22,7 +22,7 @@ struct OctreeNode {
   uint8_t childMask;  // bit o set when octant o (x | y << 1 | z << 2, 1 = upper half) exists
 };
 
-// An octree over all faces of all grid instances in world space, built once per scene.
+// An octree over all faces of all instances in world space, built once per scene.
 //
 // Design choice: a loose octree with tight bounds. Each face goes to the cell of its centroid
 // (faces are sorted by the Morton code of the centroid, so every node's faces are one range of
@@ -43,7 +43,7 @@ class Octree {
   static constexpr int kMaxDepth = 10;         // 2^10 cells per axis: 30-bit Morton codes
   static constexpr uint32_t kLeafFaces = 256;  // default: at most this many faces make a leaf
 
-  // Builds the octree over scene.faceCount() faces (id = instance * mesh faces + face); a node
+  // Builds the octree over scene.faceCount() faces (ids as Scene numbers them); a node
   // with at most `leafFaces` faces (or at kMaxDepth) is a leaf.
   void build(const Scene& scene, uint32_t leafFaces = kLeafFaces);
 

@@ -27,19 +27,28 @@ std::string lowerExtension(const fs::path& path) {
   return ext;
 }
 
+void limitImageReads() {
+  // OpenCV reads its limit on an image's pixels when it is loaded; it checks each file's
+  // header against it before allocating (docs/design.md, Limits).
+  // Once: two plugins may be loaded at once (a model's and a texture's side by side).
+  static const bool set =
+      ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(kMaxImagePixels).c_str(), 1) == 0;
+  (void)set;
+}
+
 namespace {
 
 CodecPlugin& codecPlugin() {
   static CodecPlugin& plugin = [&]() -> CodecPlugin& {
-    // OpenCV reads its limit on an image's pixels when it is loaded; it checks each file's
-    // header against it before allocating (docs/design.md, Limits).
-    ::setenv("OPENCV_IO_MAX_IMAGE_PIXELS", std::to_string(kMaxImagePixels).c_str(), 1);
+    limitImageReads();
     return loadPlugin<CodecPlugin>("libzrender_codecs.so", "zrenderCodecPlugin");
   }();
   return plugin;
 }
 
-cv::Mat readPng(const fs::path& path, std::string& error) {
+// A PNG image read by libpng: `begin` starts `png` on a file or on bytes in memory.
+template <typename Begin>
+cv::Mat readPng(const Begin& begin, std::string& error) {
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   const auto failed = [&] {
@@ -47,7 +56,7 @@ cv::Mat readPng(const fs::path& path, std::string& error) {
     png_image_free(&png);
     return cv::Mat();
   };
-  if (!png_image_begin_read_from_file(&png, path.c_str())) return failed();
+  if (!begin(png)) return failed();
   const size_t width = png.width, height = png.height;
   if (uint64_t(width) * height > kMaxImagePixels) {
     error = "is too large (" + std::to_string(width) + " x " + std::to_string(height) +
@@ -106,11 +115,30 @@ cv::Mat decodeOrThrow(const fs::path& path, std::string& error) {
   const size_t n = std::fread(signature, 1, sizeof signature, f);
   std::fclose(f);
   if (n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0)
-    return readPng(path, error);
+    return readPng(
+        [&](png_image& png) { return png_image_begin_read_from_file(&png, path.c_str()); }, error);
   return codecPlugin().read(path.string(), error);
 }
 
 }  // namespace
+
+cv::Mat decodeColorImage(const std::vector<unsigned char>& bytes, std::string& error) {
+  try {
+    if (bytes.size() >= 8 && png_sig_cmp(bytes.data(), 0, 8) == 0) {
+      return readPng(
+          [&](png_image& png) {
+            return png_image_begin_read_from_memory(&png, bytes.data(), bytes.size());
+          },
+          error);
+    }
+    return codecPlugin().decode(bytes, error);
+  } catch (const std::bad_alloc&) {
+    error = "cannot be read: out of memory";
+  } catch (const std::exception& e) {  // the codec plugin cannot be loaded
+    error = std::string("cannot be read: ") + e.what();
+  }
+  return {};
+}
 
 cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
   try {

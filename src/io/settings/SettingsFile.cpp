@@ -34,9 +34,10 @@ constexpr std::size_t kMaxExcerpt = 60;
 
 // Keys of a scene and of its grid (docs/design.md, Settings); any other key is warned about and
 // ignored.
-const std::set<std::string> kSceneKeys{"path",  "width",   "height",     "eye",  "target",  "up",
-                                       "angle", "axis",    "project",    "fit",  "shading", "msaa",
-                                       "cull",  "texture", "background", "grid", "bench"};
+const std::set<std::string> kSceneKeys{
+    "path", "width",   "height", "eye",  "target",  "up",         "angle", "axis",  "project",
+    "fit",  "shading", "msaa",   "cull", "texture", "background", "grid",  "bench", "objects"};
+const std::set<std::string> kObjectKeys{"path", "translate", "rotate", "scale", "texture", "color"};
 const std::set<std::string> kGridKeys{"count", "spacing"};
 
 // jsoncpp reports "* Line 3, Column 5\n  Syntax error: ...\n* Line ...": keep the first error and
@@ -234,6 +235,62 @@ class SceneReader {
     return grid;
   }
 
+  // The "objects" list: each its path, placement and color (docs/design.md, Settings).
+  std::vector<SceneObject> readObjects(const Json::Value& v, Warnings& warnings) const {
+    if (!v.isArray() || v.empty())
+      fail("objects", "expected a non-empty array of objects" + got(v));
+    std::vector<SceneObject> objects;
+    for (Json::ArrayIndex i = 0; i < v.size(); ++i) {
+      const Json::Value& o = v[i];
+      const std::string key = "objects[" + std::to_string(i) + "]";
+      if (!o.isObject()) fail(key, "expected an object with a \"path\"" + got(o));
+      for (const auto& name : o.getMemberNames()) {
+        if (!kObjectKeys.count(name)) {
+          warnings.push_back(where_ + ": unknown key '" + key + "." + printable(name) +
+                             "' (ignored)");
+        }
+      }
+      SceneObject object;
+      if (!o.isMember("path")) fail(key + ".path", "missing");
+      object.path = readPath(o["path"], key + ".path");
+      if (o.isMember("translate")) object.translate = readVec3(o["translate"], key + ".translate");
+      if (o.isMember("rotate")) {
+        // [angle, [x, y, z]]: degrees about the axis, as the scene's angle and axis.
+        const Json::Value& r = o["rotate"];
+        bool ok = r.isArray() && r.size() == 2 && finiteNumber(r[0], object.angle) &&
+                  r[1].isArray() && r[1].size() == 3;
+        for (Json::ArrayIndex a = 0; ok && a < 3; ++a) ok = finiteNumber(r[1][a], object.axis[a]);
+        if (!ok) fail(key + ".rotate", "expected [angle, [x, y, z]]" + got(r));
+        checkDirection(where_, key + ".rotate", object.axis);
+      }
+      if (o.isMember("scale")) {
+        const Json::Value& sc = o["scale"];
+        double f = 0.0;
+        if (finiteNumber(sc, f))
+          object.scale = cv::Vec3d(f, f, f);
+        else
+          object.scale = readVec3(sc, key + ".scale");
+        for (int a = 0; a < 3; ++a) {
+          if (!(object.scale[a] != 0.0))
+            fail(key + ".scale", "expected non-zero factors" + got(sc));
+        }
+      }
+      if (o.isMember("texture"))
+        fail(key + ".texture",
+             "an object's own texture is not supported yet (use the scene's \"texture\" key)");
+      if (o.isMember("color")) {
+        const cv::Vec3d c = readVec3(o["color"], key + ".color");
+        for (int a = 0; a < 3; ++a) {
+          if (c[a] < 0.0 || c[a] > 1.0)
+            fail(key + ".color", "expected 3 numbers from 0 to 1" + got(o["color"]));
+        }
+        object.color = c;
+      }
+      objects.push_back(std::move(object));
+    }
+    return objects;
+  }
+
   std::string_view text_;  // the parsed JSON, which value offsets index
   fs::path folder_;
   std::string where_;
@@ -248,8 +305,14 @@ SceneSettings SceneReader::read(const std::string& name, const Json::Value& obje
   }
   SceneSettings scene;
   scene.name = name;
-  if (!object.isMember("path")) fail("path", "missing");
-  scene.modelPath = readPath(object["path"], "path");
+  if (object.isMember("objects")) {
+    if (object.isMember("path")) fail("path", "give either \"path\" or \"objects\", not both");
+    scene.objects = readObjects(object["objects"], warnings);
+    scene.modelPath = scene.objects.front().path;
+  } else {
+    if (!object.isMember("path")) fail("path", "missing");
+    scene.modelPath = readPath(object["path"], "path");
+  }
   if (object.isMember("width")) scene.width = readSize(object["width"], "width");
   if (object.isMember("height")) scene.height = readSize(object["height"], "height");
   if (object.isMember("eye")) scene.eye = readVec3(object["eye"], "eye");

@@ -27,6 +27,8 @@ class CodecPlugin {
   // The image file at `path` as 8-bit BGR; empty with the reason in `error` (what follows the
   // file's name: "is too large (...)", "cannot be read as an image").
   virtual cv::Mat read(const std::string& path, std::string& error) = 0;
+  // The same for an image file's bytes already in memory (a texture embedded in a model).
+  virtual cv::Mat decode(const std::vector<unsigned char>& bytes, std::string& error) = 0;
   // A video writer (fourcc as cv::VideoWriter's) at `path`; null when none takes the format.
   virtual std::unique_ptr<VideoSink> openVideo(const std::string& path, int fourcc, double fps,
                                                cv::Size size) = 0;

@@ -31,10 +31,15 @@ bool encodeImage(const std::string& extension, const cv::Mat& image,
 // The most pixels an image read (a texture) may have: 16384 x 8192, 384 MiB as 8-bit BGR. The
 // size in a file's header is checked against it before any pixel is allocated.
 inline constexpr uint64_t kMaxImagePixels = uint64_t(1) << 27;
+// Sets OpenCV's own limit to kMaxImagePixels (OPENCV_IO_MAX_IMAGE_PIXELS); call before the first
+// plugin that links OpenCV's imgcodecs is loaded, which reads it then.
+void limitImageReads();
 
 // Decodes an image file into 8-bit BGR. Returns an empty image and sets `error` (what follows
 // the file's name: "is too large (...)", "cannot be opened: ...") on failure.
 cv::Mat decodeColorImage(const std::filesystem::path& path, std::string& error);
+// The same for an image file's bytes in memory (a texture embedded in a model file).
+cv::Mat decodeColorImage(const std::vector<unsigned char>& bytes, std::string& error);
 
 // A video file being written (.mp4: MPEG-4 part 2, .avi: Motion JPEG), 8-bit BGR frames.
 class VideoSink;

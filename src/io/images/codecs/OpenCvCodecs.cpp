@@ -59,6 +59,23 @@ class OpenCvCodecs : public CodecPlugin {
   }
 
   cv::Mat read(const std::string& path, std::string& error) override {
+    return decodeWith([&] { return cv::imread(path, cv::IMREAD_COLOR); }, error);
+  }
+
+  cv::Mat decode(const std::vector<unsigned char>& bytes, std::string& error) override {
+    return decodeWith([&] { return cv::imdecode(bytes, cv::IMREAD_COLOR); }, error);
+  }
+
+  std::unique_ptr<VideoSink> openVideo(const std::string& path, int fourcc, double fps,
+                                       cv::Size size) override {
+    auto writer = std::make_unique<cv::VideoWriter>(path, fourcc, fps, size);
+    if (!writer->isOpened()) return nullptr;
+    return std::make_unique<OpenCvVideo>(std::move(writer));
+  }
+
+ private:
+  template <typename Decode>
+  static cv::Mat decodeWith(const Decode& decode, std::string& error) {
     const CerrCapture capture;
     // OpenCV checks the header's size against OPENCV_IO_MAX_IMAGE_PIXELS (which zrender sets)
     // before it allocates, and says so only in its message.
@@ -68,7 +85,7 @@ class OpenCvCodecs : public CodecPlugin {
     const std::string largeMessage =
         "is too large (over " + std::to_string(kMaxImagePixels) + " pixels)";
     try {
-      cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+      cv::Mat image = decode();
       if (!image.empty()) return image;
       error = tooLarge(capture.said()) ? largeMessage : "cannot be read as an image";
     } catch (const cv::Exception& e) {
@@ -77,13 +94,6 @@ class OpenCvCodecs : public CodecPlugin {
       error = "cannot be read: out of memory";
     }
     return cv::Mat();
-  }
-
-  std::unique_ptr<VideoSink> openVideo(const std::string& path, int fourcc, double fps,
-                                       cv::Size size) override {
-    auto writer = std::make_unique<cv::VideoWriter>(path, fourcc, fps, size);
-    if (!writer->isOpened()) return nullptr;
-    return std::make_unique<OpenCvVideo>(std::move(writer));
   }
 };
 

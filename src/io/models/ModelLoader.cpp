@@ -1,0 +1,156 @@
+#include "zrender/io/models/ModelLoader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "zrender/base/Plugin.hpp"
+#include "zrender/io/files/FileText.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
+#include "zrender/io/models/ModelPlugin.hpp"
+#include "zrender/io/models/PlyReader.hpp"
+#include "zrender/io/obj/ObjLoader.hpp"
+#include "zrender/io/obj/ObjScanner.hpp"
+
+namespace zrender {
+
+namespace {
+
+ModelPlugin& modelPlugin() {
+  static ModelPlugin& plugin = [&]() -> ModelPlugin& {
+    limitImageReads();  // the plugin decodes embedded textures with OpenCV
+    return loadPlugin<ModelPlugin>("libzrender_models.so", "zrenderModelPlugin");
+  }();
+  return plugin;
+}
+
+// The rules every format's mesh keeps, as the OBJ reader's own checks do for OBJ.
+void checkMesh(const std::string& file, const Mesh& mesh) {
+  for (size_t i = 0; i < mesh.positions.size(); ++i) {
+    const cv::Vec3d& p = mesh.positions[i];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+      throw InputError(file + ": NaN or infinite coordinate");
+  }
+  for (size_t f = 0; f < mesh.faceCount(); ++f) {
+    if (mesh.cornerCount(f) > kMaxFaceCorners) {
+      throw InputError(file + ": face " + std::to_string(f) + " has " +
+                       std::to_string(mesh.cornerCount(f)) + " corners, over the " +
+                       std::to_string(kMaxFaceCorners) + " zrender draws");
+    }
+  }
+  if (mesh.faceCount() == 0) throw InputError(file + ": model has no faces");
+}
+
+// An OFF's vertex and face counts, which assimp 5.2 reserves memory for before it reads them:
+// each takes a byte of the file at least.
+void checkOffCounts(const std::string& file, std::string_view bytes) {
+  size_t pos = bytes.find_first_of(" \t\r\n");  // past the keyword
+  uint64_t counts[2] = {0, 0};
+  for (uint64_t& count : counts) {
+    while (pos < bytes.size()) {
+      if (bytes[pos] == '#') {
+        pos = bytes.find('\n', pos);
+      } else if (bytes[pos] == ' ' || bytes[pos] == '\t' || bytes[pos] == '\r' ||
+                 bytes[pos] == '\n') {
+        ++pos;
+      } else {
+        break;
+      }
+    }
+    if (pos >= bytes.size()) return;  // assimp says what is missing
+    size_t end = pos;
+    while (end < bytes.size() && end - pos < 19 && bytes[end] >= '0' && bytes[end] <= '9') ++end;
+    count = std::strtoull(std::string(bytes.substr(pos, end - pos)).c_str(), nullptr, 10);
+    pos = end;
+  }
+  if (counts[0] + counts[1] > bytes.size()) {
+    throw InputError(file + ": its OFF header announces " + std::to_string(counts[0]) +
+                     " vertices and " + std::to_string(counts[1]) + " faces, more than its " +
+                     std::to_string(bytes.size()) + " bytes can hold");
+  }
+}
+
+uint32_t littleEndian32(std::string_view bytes, size_t at) {
+  uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = v << 8 | uint8_t(bytes[at + size_t(i)]);
+  return v;
+}
+
+// A binary glTF's chunks lie within the file: assimp 5.2 allocates a chunk's length as its
+// header says before it reads it.
+void checkGlbChunks(const std::string& file, std::string_view bytes) {
+  if (bytes.substr(0, 4) != "glTF") return;  // JSON
+  const auto cut = [&](const std::string& what) {
+    throw InputError(file + ": " + what + " (is the binary glTF cut short?)");
+  };
+  if (bytes.size() < 20) cut("no room for the header and a chunk");
+  for (size_t at = 12; at < bytes.size();) {
+    if (bytes.size() - at < 8) cut("a chunk header runs past the end");
+    const uint64_t length = littleEndian32(bytes, at);
+    if (length > bytes.size() - at - 8)
+      cut("a chunk of " + std::to_string(length) + " bytes runs past the end");
+    at += 8 + size_t(length);
+  }
+}
+
+// What assimp 5.2 does not survive, refused before it reads: headers whose counts make it
+// allocate more than the file could hold.
+void checkForAssimp(const std::string& file, ModelFormat format, std::string_view bytes) {
+  if (format == ModelFormat::Off) checkOffCounts(file, bytes);
+  if (format == ModelFormat::Gltf) checkGlbChunks(file, bytes);
+}
+
+Mesh readWithPlugin(std::string_view bytes, const std::string& file, ModelFormat format,
+                    bool filesBeside, Warnings& warnings) {
+  checkForAssimp(file, format, bytes);
+  Mesh mesh;
+  std::string error;
+  if (!modelPlugin().read(file, bytes, format, filesBeside, mesh, warnings, error)) {
+    // assimp's reason may quote bytes of the file: escaped to one printable line.
+    throw InputError(file + ": cannot read the " + modelFormatInfo(format).title +
+                     " file: " + quoteName(error));
+  }
+  checkMesh(file, mesh);
+  return mesh;
+}
+
+// The reader of each format: OBJ and PLY zrender's own, the others assimp's.
+Mesh readBytes(std::string_view bytes, const std::string& file, ModelFormat format,
+               bool filesBeside, Warnings& warnings, const Threads* threads) {
+  if (format == ModelFormat::Obj) return loadObjFromText(bytes, file, warnings, threads);
+  if (format == ModelFormat::Ply) {
+    Mesh mesh = readPly(bytes, file);
+    checkMesh(file, mesh);
+    return mesh;
+  }
+  return readWithPlugin(bytes, file, format, filesBeside, warnings);
+}
+
+}  // namespace
+
+Mesh loadModel(const std::filesystem::path& path, Warnings& warnings, const Threads* threads) {
+  const std::string file = path.string();
+  const FileText bytes(file);  // first: a missing file or a device is said as such
+  const std::optional<ModelFormat> format = modelFormatOfPath(path);
+  if (!format) {
+    const std::string ext = path.extension().string();
+    throw InputError(file + ": " +
+                     (ext.empty() ? std::string("no extension to tell its model format")
+                                  : "unknown model format '" + ext + "'") +
+                     "; zrender reads: " + modelExtensionList());
+  }
+  const std::string_view text = bytes.text();
+  checkModelContent(file, *format, text.substr(0, kModelHeadBytes), text.size());
+  return readBytes(text, file, *format, true, warnings, threads);
+}
+
+Mesh readModel(std::string_view bytes, const std::string& nameForMessages, ModelFormat format,
+               Warnings& warnings) {
+  checkModelContent(nameForMessages, format, bytes.substr(0, kModelHeadBytes), bytes.size());
+  return readBytes(bytes, nameForMessages, format, false, warnings, nullptr);
+}
+
+}  // namespace zrender
