@@ -1,7 +1,7 @@
-// Fuzz target: the model formats read through assimp (io/models/ModelLoader.hpp). The first byte
-// picks the format (PLY, STL, OFF, binary glTF), the rest is the file. Whatever the bytes,
-// readModel either gives a mesh whose every index is in range, or throws InputError with a
-// one-line message naming the file; assimp neither crashes, hangs nor reaches the terminal.
+// Fuzz target: the model formats beyond OBJ (io/models/ModelLoader.hpp). The first byte picks
+// the format (PLY and STL, read by zrender; OFF and binary glTF, by assimp), the rest is the
+// file. Whatever the bytes, readModel either gives a mesh whose every index is in range, or
+// throws InputError with a one-line message naming the file; nothing crashes, hangs or prints.
 
 #include <cstdint>
 #include <exception>

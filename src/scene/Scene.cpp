@@ -63,30 +63,29 @@ void gridBounds(Scene& scene, const std::vector<Vec3>& offsets) {
   scene.boundsRadius = std::sqrt(r2);
 }
 
-// The same for instances of any placement: every instance's vertices in world space.
+// The same for instances of any placement, from the corners of each instance's model box in
+// world space: a sphere that holds every vertex, without a pass over the vertices of every
+// instance (a scene of many objects is framed as quickly as its models are read).
 void instanceBounds(Scene& scene) {
-  const Mesh& mesh = *scene.mesh;
-  const auto eachVertex = [&](auto&& visit) {
-    for (const SceneInstance& instance : scene.instances) {
-      const SceneModel& m = scene.models[instance.part];
-      for (uint32_t p = m.positionBegin; p < m.positionEnd; ++p)
-        visit(transformPoint(instance.model, mesh.positions[p]));
+  std::vector<Vec3> corners;
+  corners.reserve(scene.instances.size() * 8);
+  for (const SceneInstance& instance : scene.instances) {
+    const SceneModel& m = scene.models[instance.part];
+    if (m.positionBegin == m.positionEnd) continue;
+    for (int c = 0; c < 8; ++c) {
+      const Vec3 p(c & 1 ? m.box.hi[0] : m.box.lo[0], c & 2 ? m.box.hi[1] : m.box.lo[1],
+                   c & 4 ? m.box.hi[2] : m.box.lo[2]);
+      corners.push_back(transformPoint(instance.model, p));
     }
-  };
-  Box3 box{Vec3(HUGE_VAL, HUGE_VAL, HUGE_VAL), Vec3(-HUGE_VAL, -HUGE_VAL, -HUGE_VAL)};
-  bool any = false;
-  eachVertex([&](const Vec3& p) {
-    any = true;
-    for (int a = 0; a < 3; ++a)
-      box.lo[a] = std::min(box.lo[a], p[a]), box.hi[a] = std::max(box.hi[a], p[a]);
-  });
-  if (!any) return;
+  }
+  if (corners.empty()) return;
+  const Box3 box = boundingBox(corners);
   scene.boundsCentre = box.centre();
   double r2 = 0.0;
-  eachVertex([&](const Vec3& p) {
+  for (const Vec3& p : corners) {
     const Vec3 d = p - scene.boundsCentre;
     r2 = std::max(r2, d.dot(d));
-  });
+  }
   scene.boundsRadius = std::sqrt(r2);
 }
 

@@ -455,7 +455,7 @@ TEST(ModelFormats, TruncatedFilesAreRefusedCleanly) {
         // Text formats may end at a line that leaves a smaller whole model.
         EXPECT_LT(mesh.faceCount(), g.faces.size()) << name << " cut at " << tenth << "/10";
       } catch (const InputError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
+        EXPECT_EQ(std::string(e.what()).rfind(path + ":", 0), 0u) << e.what();
       }
     }
   }
@@ -534,7 +534,7 @@ TEST(ModelFormats, AssimpTestModelsLoadOrFailCleanly) {
       EXPECT_GT(mesh.faceCount(), 0u) << path;
       ++loaded;
     } catch (const InputError& e) {
-      EXPECT_EQ(std::string(e.what()).rfind(path + ": ", 0), 0u) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind(path + ":", 0), 0u) << e.what();
     }
   }
   EXPECT_GT(files, 100u);

@@ -24,6 +24,9 @@ struct Grid {
 // One object of a scene of many (settings key `objects`, or a model file of several on the command
 // line): a model file placed in the world by scale, then rotation, then translation.
 struct SceneObject {
+  SceneObject() = default;
+  explicit SceneObject(std::filesystem::path file) : path(std::move(file)) {}
+
   std::filesystem::path path;          // resolved against the settings file's folder
   cv::Vec3d translate{0.0, 0.0, 0.0};  // world units
   double angle = 0.0;                  // degrees about axis

@@ -12,6 +12,7 @@
 #include "zrender/io/images/ImageCodecs.hpp"
 #include "zrender/io/models/ModelPlugin.hpp"
 #include "zrender/io/models/PlyReader.hpp"
+#include "zrender/io/models/StlReader.hpp"
 #include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/io/obj/ObjScanner.hpp"
 
@@ -117,12 +118,12 @@ Mesh readWithPlugin(std::string_view bytes, const std::string& file, ModelFormat
   return mesh;
 }
 
-// The reader of each format: OBJ and PLY zrender's own, the others assimp's.
+// The reader of each format: OBJ, PLY and STL zrender's own, the others assimp's.
 Mesh readBytes(std::string_view bytes, const std::string& file, ModelFormat format,
                bool filesBeside, Warnings& warnings, const Threads* threads) {
   if (format == ModelFormat::Obj) return loadObjFromText(bytes, file, warnings, threads);
-  if (format == ModelFormat::Ply) {
-    Mesh mesh = readPly(bytes, file);
+  if (format == ModelFormat::Ply || format == ModelFormat::Stl) {
+    Mesh mesh = format == ModelFormat::Ply ? readPly(bytes, file) : readStl(bytes, file);
     checkMesh(file, mesh);
     return mesh;
   }

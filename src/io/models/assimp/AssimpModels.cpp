@@ -60,53 +60,6 @@ class ModelFiles : public Assimp::DefaultIOSystem {
   bool filesBeside_;
 };
 
-// STL gives every triangle its own three corners: positions equal to the last bit are made one
-// vertex, as an OBJ `v` shared by its faces, so that smooth normals see the faces around it
-// (docs/design.md, Model formats). The other formats' vertices are kept as the file indexes
-// them. An open-addressing table of indices into the
-// positions: a node-based map's allocations cost more than the rest of the conversion.
-class PositionIndex {
- public:
-  explicit PositionIndex(std::vector<Vec3>& positions) : positions_(positions) {}
-
-  int32_t find(const Vec3& p) {
-    if ((positions_.size() + 1) * 2 > slots_.size()) grow();
-    const size_t mask = slots_.size() - 1;
-    for (size_t i = hash(p) & mask;; i = (i + 1) & mask) {
-      const int32_t index = slots_[i];
-      if (index < 0) {
-        slots_[i] = int32_t(positions_.size());
-        positions_.push_back(p);
-        return slots_[i];
-      }
-      if (std::memcmp(positions_[size_t(index)].val, p.val, sizeof p.val) == 0) return index;
-    }
-  }
-
- private:
-  static size_t hash(const Vec3& p) {
-    uint64_t b[3];
-    std::memcpy(b, p.val, sizeof b);
-    uint64_t h = b[0] * 0x9E3779B97F4A7C15ull;
-    h = (h ^ (h >> 31) ^ b[1]) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 29) ^ b[2]) * 0x94D049BB133111EBull;
-    return size_t(h ^ (h >> 32));
-  }
-
-  void grow() {
-    slots_.assign(std::max<size_t>(1024, slots_.size() * 2), -1);
-    const size_t mask = slots_.size() - 1;
-    for (size_t k = 0; k < positions_.size(); ++k) {
-      size_t i = hash(positions_[k]) & mask;
-      while (slots_[i] >= 0) i = (i + 1) & mask;
-      slots_[i] = int32_t(k);
-    }
-  }
-
-  std::vector<Vec3>& positions_;
-  std::vector<int32_t> slots_;
-};
-
 class SceneConverter {
  public:
   SceneConverter(const aiScene& scene, ModelFormat format, const std::string& path, Mesh& mesh,
@@ -121,12 +74,9 @@ class SceneConverter {
   }
 
  private:
-  // Formats without materials get none, so that their faces take zrender's default as OBJ's do
-  // (assimp gives them a 0.6 gray one).
-  bool formatHasMaterials() const {
-    return format_ != ModelFormat::Ply && format_ != ModelFormat::Stl &&
-           format_ != ModelFormat::Off;
-  }
+  // OFF has no materials: none, so that its faces take zrender's default as OBJ's do (assimp
+  // gives it a 0.6 gray one).
+  bool formatHasMaterials() const { return format_ != ModelFormat::Off; }
 
   void convertMaterials() {
     materialIndex_.assign(scene_.mNumMaterials, -1);
@@ -217,9 +167,7 @@ class SceneConverter {
     // Normals go with the inverse transpose of the node's matrix (its 3 x 3 part).
     const cv::Matx33d linear = world.get_minor<3, 3>(0, 0);
     const cv::Matx33d normalMatrix = identity ? cv::Matx33d::eye() : linear.inv().t();
-    // STL's facet normals are the faces' own, which zrender computes itself; dropped so that
-    // phong and texture smooth the model as from any other format.
-    const bool normals = source.HasNormals() && format_ != ModelFormat::Stl;
+    const bool normals = source.HasNormals();
     const bool uvs = source.HasTextureCoords(0);
     const bool colors = source.HasVertexColors(0);
     std::vector<int32_t> position(source.mNumVertices);
@@ -227,12 +175,8 @@ class SceneConverter {
       const aiVector3D& p = source.mVertices[v];
       Vec3 world3(p.x, p.y, p.z);
       if (!identity) world3 = transformPoint(world, world3);
-      if (format_ == ModelFormat::Stl) {
-        position[v] = positions_.find(world3);
-      } else {
-        position[v] = int32_t(mesh_.positions.size());
-        mesh_.positions.push_back(world3);
-      }
+      position[v] = int32_t(mesh_.positions.size());
+      mesh_.positions.push_back(world3);
     }
     const int32_t firstNormal = int32_t(mesh_.normals.size());
     if (normals) {
@@ -289,7 +233,6 @@ class SceneConverter {
   Mesh& mesh_;
   Warnings& warnings_;
   std::vector<int32_t> materialIndex_;  // per assimp material: index into mesh_.materials
-  PositionIndex positions_{mesh_.positions};
   bool hasColors_ = false;
 };
 
