@@ -1,6 +1,7 @@
 #include "zrender/io/SceneFiles.hpp"
 
 #include <algorithm>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -29,39 +30,48 @@ cv::Mat timesDiffuse(cv::Mat texture, const Material& material) {
 
 }  // namespace
 
-cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings) {
-  std::string texturePath;
-  const Material* material = nullptr;
-  if (settings.texture) {
-    texturePath = settings.texture->string();
-  } else {
-    for (const Material& m : mesh.materials) {
-      if (!m.embeddedTexels.empty()) return timesDiffuse(m.embeddedTexels, m);
-      if (!m.embeddedImage.empty()) {
+cv::Mat loadTexture(const SceneSettings& settings) {
+  if (!settings.texture) return cv::Mat();
+  const std::string path = settings.texture->string();
+  std::string error;
+  cv::Mat texture = decodeColorImage(path, error);
+  // The scene's own `texture` key is a value the user chose: bad input.
+  if (texture.empty())
+    throw InputError(path + ": texture " + error + " (key 'texture' of scene '" + settings.name +
+                     "')");
+  return texture;
+}
+
+std::vector<cv::Mat> loadMaterialTextures(const Mesh& mesh, Warnings& warnings) {
+  std::vector<cv::Mat> textures(mesh.materials.size());
+  std::map<std::string, cv::Mat> files;  // each file once, as read (empty: could not be)
+  for (size_t i = 0; i < mesh.materials.size(); ++i) {
+    const Material& m = mesh.materials[i];
+    cv::Mat texels;
+    if (!m.embeddedTexels.empty()) {
+      texels = m.embeddedTexels;
+    } else if (!m.embeddedImage.empty()) {
+      std::string error;
+      texels = decodeColorImage(m.embeddedImage, error);
+      if (texels.empty())
+        warnings.push_back(m.diffuseTexture + ": texture " + error + " (ignored)");
+    } else if (!m.diffuseTexture.empty()) {
+      const auto known = files.find(m.diffuseTexture);
+      if (known != files.end()) {
+        texels = known->second;
+      } else {
+        // A material's map_Kd comes with a model from elsewhere, whose textures often go
+        // missing: drawn without.
         std::string error;
-        cv::Mat texture = decodeColorImage(m.embeddedImage, error);
-        if (texture.empty())
+        texels = decodeColorImage(m.diffuseTexture, error);
+        if (texels.empty())
           warnings.push_back(m.diffuseTexture + ": texture " + error + " (ignored)");
-        return timesDiffuse(texture, m);
-      }
-      if (!m.diffuseTexture.empty()) {
-        texturePath = m.diffuseTexture;
-        material = &m;
-        break;
+        files.emplace(m.diffuseTexture, texels);
       }
     }
+    textures[i] = timesDiffuse(texels, m);
   }
-  if (texturePath.empty()) return cv::Mat();
-  std::string error;
-  cv::Mat texture = decodeColorImage(texturePath, error);
-  if (material != nullptr) texture = timesDiffuse(texture, *material);
-  // The scene's own `texture` key is a value the user chose: bad input. A material's map_Kd
-  // comes with a model from elsewhere, whose textures often go missing: drawn without.
-  if (texture.empty() && settings.texture)
-    throw InputError(texturePath + ": texture " + error + " (key 'texture' of scene '" +
-                     settings.name + "')");
-  if (texture.empty()) warnings.push_back(texturePath + ": texture " + error + " (ignored)");
-  return texture;
+  return textures;
 }
 
 Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads* threads) {
@@ -69,21 +79,21 @@ Scene loadScene(const SceneSettings& settings, Warnings& warnings, const Threads
   std::shared_ptr<const Mesh> mesh;
   cv::Mat texture;
   if (settings.texture) {
-    // Warnings in the order of loading one after the other: the model's, then the texture's.
-    Warnings textureWarnings;
     sideBySide(threads, 2, [&](size_t job) {
       if (job == 0) {
         mesh = std::make_shared<const Mesh>(loadModel(settings.modelPath, warnings, threads));
       } else {
-        texture = loadTexture(settings, Mesh(), textureWarnings);
+        texture = loadTexture(settings);
       }
     });
-    warnings.insert(warnings.end(), textureWarnings.begin(), textureWarnings.end());
-  } else {  // the texture may be named by the model's materials: after the model
-    mesh = std::make_shared<const Mesh>(loadModel(settings.modelPath, warnings, threads));
-    texture = loadTexture(settings, *mesh, warnings);
+    return makeScene(settings, std::move(mesh), std::move(texture));
   }
-  return makeScene(settings, std::move(mesh), std::move(texture));
+  // The textures are named by the model's materials: after the model.
+  mesh = std::make_shared<const Mesh>(loadModel(settings.modelPath, warnings, threads));
+  std::vector<cv::Mat> materialTextures = loadMaterialTextures(*mesh, warnings);
+  Scene scene = makeScene(settings, std::move(mesh));
+  scene.materialTextures = std::move(materialTextures);
+  return scene;
 }
 
 Scene loadObjects(const SceneSettings& settings, Warnings& warnings, const Threads* threads) {
@@ -103,8 +113,32 @@ Scene loadObjects(const SceneSettings& settings, Warnings& warnings, const Threa
   }
   SceneMeshes joined = joinMeshes(meshes);
   meshes.clear();  // the joined mesh holds them now (or shares the only one)
-  cv::Mat texture = loadTexture(settings, *joined.mesh, warnings);
-  return makeScene(settings, std::move(joined), objectModel, std::move(texture));
+  cv::Mat texture = loadTexture(settings);
+  std::vector<cv::Mat> materialTextures;
+  if (texture.empty()) materialTextures = loadMaterialTextures(*joined.mesh, warnings);
+  Scene scene = makeScene(settings, std::move(joined), objectModel, std::move(texture));
+  scene.materialTextures = std::move(materialTextures);
+  // The objects' own textures, each file once; one that cannot be read is bad input, as the
+  // scene's `texture` key.
+  std::vector<int32_t> objectTexture(settings.objects.size(), -1);
+  std::vector<std::filesystem::path> textureFiles;
+  for (size_t o = 0; o < settings.objects.size(); ++o) {
+    const std::optional<std::filesystem::path>& file = settings.objects[o].texture;
+    if (!file) continue;
+    const auto known = std::find(textureFiles.begin(), textureFiles.end(), *file);
+    objectTexture[o] = int32_t(known - textureFiles.begin());
+    if (known != textureFiles.end()) continue;
+    textureFiles.push_back(*file);
+    std::string error;
+    cv::Mat texels = decodeColorImage(*file, error);
+    if (texels.empty())
+      throw InputError(file->string() + ": texture " + error + " (key 'objects[" +
+                       std::to_string(o) + "].texture' of scene '" + settings.name + "')");
+    scene.objectTextures.push_back(texels);
+  }
+  for (size_t k = 0; k < scene.instances.size(); ++k)
+    scene.instances[k].texture = objectTexture[k % settings.objects.size()];
+  return scene;
 }
 
 }  // namespace zrender

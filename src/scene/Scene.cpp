@@ -165,6 +165,19 @@ void Scene::numberFaces() {
   faceCount_ = uint32_t(faces);
 }
 
+const cv::Mat& Scene::textureOf(uint32_t meshFace) const {
+  static const cv::Mat none;
+  if (!texture.empty()) return texture;
+  const int32_t material = meshFace < mesh->faceMaterial.size() ? mesh->faceMaterial[meshFace] : -1;
+  if (material < 0 || size_t(material) >= materialTextures.size()) return none;
+  return materialTextures[size_t(material)];
+}
+
+const cv::Mat& Scene::textureOf(const SceneInstance& instance, uint32_t meshFace) const {
+  if (texture.empty() && instance.texture >= 0) return objectTextures[size_t(instance.texture)];
+  return textureOf(meshFace);
+}
+
 FaceRef Scene::locateSearch(uint32_t faceId) const {
   const auto after = std::upper_bound(
       instances.begin(), instances.end(), faceId,

@@ -90,7 +90,7 @@ ZRENDER_AVX2 inline void loadPairs(const uint32_t* texels, const int32_t index[8
 
 // sampleTexture's operations: R, G, B in 0..255, the texels read as `reads` says.
 template <TexelReads reads>
-ZRENDER_AVX2 inline void sampleTexture(const SurfaceFrame& f, F u, F v, F rgb[3]) {
+ZRENDER_AVX2 inline void sampleTexture(const FaceSurface& f, F u, F v, F rgb[3]) {
   const F zero = _mm256_setzero_ps();
   const F uu = _mm256_max_ps(_mm256_sub_ps(u, _mm256_floor_ps(u)), zero);
   const F vv = _mm256_max_ps(_mm256_sub_ps(v, _mm256_floor_ps(v)), zero);
@@ -279,7 +279,7 @@ template <TexelReads reads, typename Sink>
       }
       const F light = _mm256_fmadd_ps(splat(0.9f), diffuse, splat(0.1f));
       F base[3] = {splat(face.base[0]), splat(face.base[1]), splat(face.base[2])};
-      if (face.textured) sampleTexture<reads>(f, tu, tv, base);
+      if (face.textured) sampleTexture<reads>(face, tu, tv, base);
       for (int k = 0; k < 3; ++k) t[k] = _mm256_fmadd_ps(base[k], light, shine);
     }
     const I rgb = _mm256_or_si256(

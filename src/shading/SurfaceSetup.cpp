@@ -25,7 +25,16 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
     }
     for (Vec3& n : smoothNormals) n = safeNormalize(n);
   }
-  const bool texture = mode == ShadingMode::Texture && !scene.texture.empty();
+  // Each distinct texture framed once (FaceSurface); faces point at theirs.
+  std::vector<const cv::Mat*> distinct;
+  const auto indexOf = [&](const cv::Mat& t) -> int32_t {
+    if (mode != ShadingMode::Texture || t.empty()) return -1;
+    for (size_t i = 0; i < distinct.size(); ++i) {
+      if (distinct[i]->data == t.data) return int32_t(i);
+    }
+    distinct.push_back(&t);
+    return int32_t(distinct.size() - 1);
+  };
   corners_.resize(mesh.corners.size());
   faces_.resize(mesh.faceCount());
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -51,28 +60,35 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
     face.base = f < mesh.faceColors.size() ? mesh.faceColors[f]
                 : material >= 0            ? mesh.materials[size_t(material)].diffuse
                                            : cv::Vec3f(0.8f, 0.8f, 0.8f);
-    face.textured = texture && allUvs;
+    face.allUvs = allUvs;
+    face.texture = allUvs ? indexOf(scene.textureOf(uint32_t(f))) : -1;
   }
-  const cv::Mat& t = scene.texture;
-  if (mode == ShadingMode::Texture && !t.empty()) {
+  // Objects' own textures: for each instance that has one, its index among textures_.
+  for (const SceneInstance& instance : scene.instances)
+    instanceTextures_.push_back(instance.texture >= 0 && scene.texture.empty()
+                                    ? indexOf(scene.objectTextures[size_t(instance.texture)])
+                                    : -1);
+  textures_.resize(distinct.size());
+  for (size_t i = 0; i < distinct.size(); ++i) {
     // Framed by a copy of the last column and row before the first and of the first after the
-    // last (SurfaceFrame), so that bilinear filtering reads texel pairs without wrapping.
+    // last (FaceSurface), so that bilinear filtering reads texel pairs without wrapping.
+    const cv::Mat& t = *distinct[i];
     const int rows = t.rows, cols = t.cols;
     const int stride = cols + 2;
-    texels_.resize(size_t(stride) * size_t(rows + 2));  // every texel written below
+    Texture& out = textures_[i];
+    out.width = cols;
+    out.height = rows;
+    out.texels.resize(size_t(stride) * size_t(rows + 2));  // every texel written below
     const auto texel = [](const uint8_t* bgr) {
       return uint32_t(bgr[2]) << 16 | uint32_t(bgr[1]) << 8 | bgr[0];
     };
     for (int y = 0; y < rows + 2; ++y) {
       const uint8_t* row = t.ptr((y + rows - 1) % rows);
-      uint32_t* out = texels_.data() + size_t(y) * size_t(stride);
-      out[0] = texel(row + 3 * (cols - 1));
-      for (int x = 0; x < cols; ++x) out[x + 1] = texel(row + 3 * x);
-      out[cols + 1] = texel(row);
+      uint32_t* line = out.texels.data() + size_t(y) * size_t(stride);
+      line[0] = texel(row + 3 * (cols - 1));
+      for (int x = 0; x < cols; ++x) line[x + 1] = texel(row + 3 * x);
+      line[cols + 1] = texel(row);
     }
-    frame_.texels = texels_.data();
-    frame_.textureWidth = cols;
-    frame_.textureHeight = rows;
   }
   frame_.mode = mode;
 }
@@ -192,7 +208,16 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
   // An object's own color takes the place of its faces' (SceneObject::color).
   const cv::Vec3f& base = instance.colored ? instance.color : data.base;
   for (int i = 0; i < 3; ++i) face.base[i] = base[i] * 255.0f;
-  face.textured = data.textured;
+  const int32_t textureIndex = data.allUvs && instanceTextures_[ref.instance] >= 0
+                                   ? instanceTextures_[ref.instance]
+                                   : data.texture;
+  if (textureIndex >= 0) {
+    const Texture& t = textures_[size_t(textureIndex)];
+    face.textured = true;
+    face.texels = t.texels.data();
+    face.textureWidth = t.width;
+    face.textureHeight = t.height;
+  }
   // The planes' origin: the sample of the first corner when it lies in front of the eye
   // (clamped to the image), else the image's centre. From the face alone, so that it is the
   // same whichever sample meets the face first.

@@ -398,11 +398,11 @@ TEST(ModelFormats, GltfTextureTimesFactorMatchesObjMapKd) {
   }
   dir.write("m.mtl", "newmtl t\nKd 1 1 1\nmap_Kd product.png\n");
   const Scene reference = load(dir.write("t.obj", obj), ShadingMode::Texture);
-  ASSERT_FALSE(reference.texture.empty());
+  ASSERT_FALSE(reference.materialTextures.at(0).empty());
   std::string json, bin;
   gltfParts(g, extras, "", json, bin);
   const Scene embedded = load(dir.write("t.glb", glb(json, bin)), ShadingMode::Texture);
-  ASSERT_FALSE(embedded.texture.empty());
+  ASSERT_FALSE(embedded.materialTextures.at(0).empty());
   expectSameScenes(reference, embedded, "glb");
 }
 
@@ -539,6 +539,55 @@ TEST(ModelFormats, AssimpTestModelsLoadOrFailCleanly) {
   }
   EXPECT_GT(files, 100u);
   EXPECT_GT(loaded, files / 2);
+}
+
+}  // namespace
+}  // namespace zrender
+
+namespace zrender {
+namespace {
+
+// Two squares side by side whose materials have textures of their own (MTL map_Kd): in the
+// `texture` mode each square's pixels are those it has when its texture is the whole scene's.
+TEST(ModelFormats, EachMaterialDrawsItsOwnTexture) {
+  const test::TempDir dir;
+  cv::Mat left(2, 2, CV_8UC3), right(2, 2, CV_8UC3);
+  left.at<cv::Vec3b>(0, 0) = cv::Vec3b(200, 40, 100),
+                        left.at<cv::Vec3b>(0, 1) = cv::Vec3b(10, 220, 60);
+  left.at<cv::Vec3b>(1, 0) = cv::Vec3b(90, 80, 240),
+                        left.at<cv::Vec3b>(1, 1) = cv::Vec3b(60, 160, 20);
+  right = cv::Scalar(255, 255, 255) - left;
+  ASSERT_TRUE(cv::imwrite(dir.file("left.png"), left));
+  ASSERT_TRUE(cv::imwrite(dir.file("right.png"), right));
+  dir.write("m.mtl", "newmtl l\nKd 1 1 1\nmap_Kd left.png\nnewmtl r\nKd 1 1 1\nmap_Kd right.png\n");
+  const std::string obj = dir.write(
+      "two.obj",
+      "mtllib m.mtl\nv -1.5 -1 0\nv -0.1 -1 0\nv -0.1 1 0\nv -1.5 1 0\nv 0.1 -1 0\nv 1.5 -1 0\n"
+      "v 1.5 1 0\nv 0.1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl l\nf 1/1 2/2 3/3 4/4\n"
+      "usemtl r\nf 5/1 6/2 7/3 8/4\n");
+  SceneSettings settings = test::tinySettings(40);
+  settings.modelPath = obj;
+  settings.shading = ShadingMode::Texture;
+  Warnings warnings;
+  const Scene both = loadScene(settings, warnings);
+  ASSERT_TRUE(warnings.empty());
+  ASSERT_EQ(both.materialTextures.size(), 2u);
+  const test::Rendered r = test::render(both, "zbuffer");
+  for (int side = 0; side < 2; ++side) {
+    settings.texture = std::filesystem::path(dir.file(side == 0 ? "left.png" : "right.png"));
+    const test::Rendered alone = test::render(loadScene(settings, warnings), "zbuffer");
+    size_t compared = 0;
+    for (int y = 0; y < 40; ++y) {
+      for (int x = 0; x < 40; ++x) {
+        const uint32_t id = keyFaceId(r.buffer.row(y)[x]);
+        if (id != uint32_t(side)) continue;
+        ++compared;
+        ASSERT_EQ(r.color.at<cv::Vec3b>(y, x), alone.color.at<cv::Vec3b>(y, x))
+            << "side " << side << " at " << x << ", " << y;
+      }
+    }
+    EXPECT_GT(compared, 100u);
+  }
 }
 
 }  // namespace

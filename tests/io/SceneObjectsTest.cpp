@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include <opencv2/imgcodecs.hpp>
 
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
@@ -192,7 +195,8 @@ TEST(SceneObjects, SettingsReadObjectsAndRefuseBadOnes) {
   Warnings warnings;
   const SettingsFile file = parseSettings(
       R"({"s": {"objects": [{"path": "a.obj"}, {"path": "b.ply", "translate": [1, 2, 3],
-          "rotate": [90, [0, 1, 0]], "scale": 2, "color": [0.5, 0.25, 1]}], "fit": true}})",
+          "rotate": [90, [0, 1, 0]], "scale": 2, "color": [0.5, 0.25, 1], "texture": "t.png"}],
+          "fit": true}})",
       dir.file("settings.json"), warnings);
   const SceneSettings& s = file.scenes.at("s");
   ASSERT_EQ(s.objects.size(), 2u);
@@ -201,6 +205,7 @@ TEST(SceneObjects, SettingsReadObjectsAndRefuseBadOnes) {
   EXPECT_EQ(s.objects[1].angle, 90.0);
   EXPECT_EQ(s.objects[1].scale, cv::Vec3d(2, 2, 2));
   EXPECT_EQ(*s.objects[1].color, cv::Vec3d(0.5, 0.25, 1));
+  EXPECT_EQ(*s.objects[1].texture, dir.file("t.png"));
   EXPECT_TRUE(warnings.empty());
 
   const std::pair<const char*, const char*> bad[] = {
@@ -239,6 +244,55 @@ TEST(SceneObjects, SeveralFilesOnTheCommandLineAreOneScene) {
   ASSERT_EQ(r1.status, 0) << r1.err;
   EXPECT_EQ(test::readFile(dir.file("two.png")), test::readFile(dir.file("one.png")));
   EXPECT_EQ(test::readFile(dir.file("c2.png")), test::readFile(dir.file("c1.png")));
+}
+
+}  // namespace
+}  // namespace zrender
+
+namespace zrender {
+namespace {
+
+// An object's own texture: its faces draw as when that texture is the whole scene's; an object
+// without one keeps its faces' own (here none: its material's Kd).
+TEST(SceneObjects, AnObjectsTextureIsItsFacesTexture) {
+  const test::TempDir dir;
+  cv::Mat texture(2, 2, CV_8UC3);
+  texture.at<cv::Vec3b>(0, 0) = cv::Vec3b(200, 40, 100);
+  texture.at<cv::Vec3b>(0, 1) = cv::Vec3b(10, 220, 60);
+  texture.at<cv::Vec3b>(1, 0) = cv::Vec3b(90, 80, 240);
+  texture.at<cv::Vec3b>(1, 1) = cv::Vec3b(60, 160, 20);
+  ASSERT_TRUE(cv::imwrite(dir.file("t.png"), texture));
+  const std::string square =
+      dir.write("square.obj",
+                "v -1.5 -1 0\nv -0.1 -1 0\nv -0.1 1 0\nv -1.5 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                "vt 0 1\nf 1/1 2/2 3/3 4/4\n");
+  SceneSettings settings = test::tinySettings(40);
+  settings.name = "objects";
+  settings.shading = ShadingMode::Texture;
+  SceneObject textured(square), plain(square);
+  textured.texture = std::filesystem::path(dir.file("t.png"));
+  plain.translate = Vec3(1.6, 0, 0);
+  settings.objects = {textured, plain};
+  settings.modelPath = square;
+  Warnings warnings;
+  const Scene scene = loadScene(settings, warnings);
+  ASSERT_EQ(scene.objectTextures.size(), 1u);
+  const test::Rendered r = test::render(scene, "zbuffer");
+
+  SceneSettings alone = test::tinySettings(40);
+  alone.modelPath = square;
+  alone.shading = ShadingMode::Texture;
+  alone.texture = std::filesystem::path(dir.file("t.png"));
+  const test::Rendered a = test::render(loadScene(alone, warnings), "zbuffer");
+  size_t covered = 0;
+  for (int y = 0; y < 40; ++y) {
+    for (int x = 0; x < 40; ++x) {
+      if (keyFaceId(r.buffer.row(y)[x]) != 0) continue;
+      ++covered;
+      ASSERT_EQ(r.color.at<cv::Vec3b>(y, x), a.color.at<cv::Vec3b>(y, x)) << x << ", " << y;
+    }
+  }
+  EXPECT_GT(covered, 100u);
 }
 
 }  // namespace

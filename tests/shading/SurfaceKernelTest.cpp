@@ -78,7 +78,7 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
   if (versions.empty()) GTEST_SKIP() << "this CPU has no AVX2";
   std::mt19937 rng(2026);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  // A 5 x 3 texture stored as SurfaceFrame says: framed by a copy of the last column and row
+  // A 5 x 3 texture stored as FaceSurface says: framed by a copy of the last column and row
   // before the first and of the first after the last.
   const int tw = 5, th = 3;
   std::vector<uint32_t> texture(size_t(tw) * th);
@@ -98,10 +98,10 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
     frame.rayOriginY = 1.0f - 0.2f * unit(rng);
     frame.rayScaleX = 0.004f * unit(rng);
     frame.rayScaleY = 0.004f * unit(rng);
-    frame.texels = texels.data();
-    frame.textureWidth = tw;
-    frame.textureHeight = th;
     FaceSurface face;
+    face.texels = texels.data();
+    face.textureWidth = tw;
+    face.textureHeight = th;
     face.originX = int(rng() % 500);
     face.originY = int(rng() % 500);
     face.fanCount = 1;

@@ -98,17 +98,16 @@ uint32_t ReferenceSurfaceShading::faceShadeIndex(uint32_t faceId) {
   fs.base = local < mesh.faceColors.size() ? mesh.faceColors[local]
             : material >= 0                ? mesh.materials[size_t(material)].diffuse
                                            : cv::Vec3f(0.8f, 0.8f, 0.8f);
-  if (mode_ == ShadingMode::Texture && !scene_.texture.empty() && allUvs)
-    fs.base = cv::Vec3f(-1, -1, -1);  // marker: sample the texture
+  fs.texture = mode_ == ShadingMode::Texture && allUvs ? &scene_.textureOf(local) : nullptr;
+  if (fs.texture && fs.texture->empty()) fs.texture = nullptr;
   entry.stamp = frame_;
   entry.index = uint32_t(faceShade_.size());
   faceShade_.push_back(fs);
   return entry.index;
 }
 
-cv::Vec3f ReferenceSurfaceShading::sampleTexture(const cv::Vec2d& uv) const {
+cv::Vec3f ReferenceSurfaceShading::sampleTexture(const cv::Mat& t, const cv::Vec2d& uv) const {
   // Bilinear, wrapping; v = 0 is the bottom row of the image (OBJ convention).
-  const cv::Mat t = scene_.texture;
   const double u = uv[0] - std::floor(uv[0]), v = uv[1] - std::floor(uv[1]);
   const double x = u * t.cols - 0.5, y = (1.0 - v) * t.rows - 0.5;
   const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
@@ -168,9 +167,9 @@ uint32_t ReferenceSurfaceShading::color(uint32_t faceId, int x, int y) {
   } else {
     if (fs.flip) n = -n;
     cv::Vec3f base = fs.base;
-    if (base[0] < 0.0f) {
+    if (fs.texture) {
       const cv::Vec2d uv = cornerUv_[fs.first] * w0 + cornerUv_[i1] * u + cornerUv_[i2] * v;
-      base = sampleTexture(uv);
+      base = sampleTexture(*fs.texture, uv);
     }
     const Vec3 toEye = safeNormalize(-(dir * bestT));
     rgb = blinnPhong(base, n, toEye);

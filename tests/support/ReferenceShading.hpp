@@ -36,11 +36,12 @@ class ReferenceSurfaceShading {
   struct FaceShade {  // view-space data of one face for per-sample interpolation
     uint32_t first;   // into cornerPos_/cornerNormal_/cornerUv_
     uint32_t count;
-    bool flip;       // back-facing: light the other side
-    cv::Vec3f base;  // material diffuse color, RGB 0..1; negative: sample the texture
+    bool flip;                         // back-facing: light the other side
+    cv::Vec3f base;                    // material diffuse color, RGB 0..1
+    const cv::Mat* texture = nullptr;  // sampled in place of base when there is one
   };
   uint32_t faceShadeIndex(uint32_t faceId);
-  cv::Vec3f sampleTexture(const cv::Vec2d& uv) const;
+  cv::Vec3f sampleTexture(const cv::Mat& t, const cv::Vec2d& uv) const;
 
   const Scene& scene_;
   ShadingMode mode_;

@@ -9,11 +9,13 @@ namespace zrender {
 
 class Threads;
 
-// The scene's diffuse texture (8-bit BGR): its `texture` key, else the first material's
-// map_Kd; empty when there is none. A `texture` key naming a file that cannot be read is bad
-// input (InputError); a material's map_Kd that cannot be read is a warning, and the model is
-// drawn without it.
-cv::Mat loadTexture(const SceneSettings& settings, const Mesh& mesh, Warnings& warnings);
+// The scene's `texture` key's image (8-bit BGR), empty without one; a file that cannot be read
+// is bad input (InputError).
+cv::Mat loadTexture(const SceneSettings& settings);
+// Each material's texture (8-bit BGR; map_Kd, glTF's base color texture times its factor,
+// embedded images), empty where it has none; a file used by several materials is read once. One
+// that cannot be read is a warning, and its faces are drawn without it.
+std::vector<cv::Mat> loadMaterialTextures(const Mesh& mesh, Warnings& warnings);
 
 // The scene of `settings`: its model file (or its objects' files), its texture, its instances.
 // Throws InputError. With `threads` (more than one), a `texture` key's image is read while the

@@ -39,6 +39,7 @@ struct SceneInstance {
   uint32_t firstId = 0;               // face id of the part's first face here
   bool colored = false;               // its object gives its faces' base color
   cv::Vec3f color{0.0f, 0.0f, 0.0f};  // linear 0..1 RGB
+  int32_t texture = -1;               // into Scene::objectTextures: its object's texture, else -1
 };
 
 // A face id's instance and its face in the mesh.
@@ -59,8 +60,10 @@ struct Scene {
   // Every instance is the whole mesh (one model file, a grid of it): a face id's instance is
   // id / mesh faces.
   bool uniform = true;
-  cv::Mat texture;             // 8-bit BGR, or empty
-  Vec3 boundsCentre{0, 0, 0};  // bounding sphere of all instances, world space
+  cv::Mat texture;  // the `texture` key's image (8-bit BGR): every textured face's; or empty
+  std::vector<cv::Mat> materialTextures;  // per mesh material: its texture (8-bit BGR), or empty
+  std::vector<cv::Mat> objectTextures;    // the objects' own textures (SceneInstance::texture)
+  Vec3 boundsCentre{0, 0, 0};             // bounding sphere of all instances, world space
   double boundsRadius = 0.0;
   Box3 meshBox;  // the mesh's box, model space
 
@@ -68,6 +71,10 @@ struct Scene {
   uint32_t faceCount() const { return faceCount_; }
   const Mat4& modelMatrix(uint32_t instance) const { return instances[instance].model; }
   const SceneModel& modelOf(uint32_t instance) const { return models[instances[instance].part]; }
+  // The texture mesh face f is drawn with: the scene's, else its material's; empty for none.
+  // An instance's object texture (SceneInstance::texture) comes before the material's.
+  const cv::Mat& textureOf(uint32_t meshFace) const;
+  const cv::Mat& textureOf(const SceneInstance& instance, uint32_t meshFace) const;
   // The instance and mesh face of a face id (< faceCount()).
   FaceRef locate(uint32_t faceId) const {
     if (uniform) {
@@ -89,7 +96,8 @@ struct Scene {
 
 // The scene of one model: `settings`' grid of the mesh rotated by its angle and axis. Throws
 // InputError when the scene has more than kMaxSceneFaces. `texture` (8-bit BGR, or empty) is the
-// scene's diffuse texture, as io's loadTexture() reads it.
+// texture of every face that has texture coordinates, as a `texture` key gives it; the
+// materials' own (materialTextures) are set by io's loadScene().
 Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
                 cv::Mat texture = cv::Mat());
 // The scene of `settings.objects`, object o showing model objectModel[o] of `meshes`: its

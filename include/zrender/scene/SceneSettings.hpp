@@ -33,6 +33,7 @@ struct SceneObject {
   cv::Vec3d axis{0.0, 1.0, 0.0};
   cv::Vec3d scale{1.0, 1.0, 1.0};
   std::optional<cv::Vec3d> color;  // linear 0..1 RGB: its faces' base color, else theirs
+  std::optional<std::filesystem::path> texture;  // its faces' texture, else their materials'
 };
 
 // The camera values `fit` leaves as they are. A settings scene's "fit": true and --fit frame

@@ -53,6 +53,11 @@ struct FaceSurface {
   uint32_t firstFan = 0, fanCount = 0;
   float base[3] = {204.0f, 204.0f, 204.0f};  // diffuse RGB, 0..255 (material Kd times 255)
   bool textured = false;                     // base color from the texture at the sample's uv
+  // Its texture, 0x00RRGGBB, row 0 at the top (v = 1), framed by a copy of its last column
+  // and row before the first and of its first after the last: (textureWidth + 2) x
+  // (textureHeight + 2) texels, texel (x, y) at (y + 1) (textureWidth + 2) + x + 1.
+  const uint32_t* texels = nullptr;
+  int textureWidth = 0, textureHeight = 0;
 };
 
 // What every sample of a frame shares.
@@ -61,11 +66,6 @@ struct SurfaceFrame {
   // The view-space ray through the centre of sample (x, y) is (fma(x, rayScaleX, rayOriginX),
   // fma(y, -rayScaleY, rayOriginY), -1).
   float rayOriginX = 0.0f, rayOriginY = 0.0f, rayScaleX = 0.0f, rayScaleY = 0.0f;
-  // The texture, 0x00RRGGBB, row 0 at the top (v = 1), framed by a copy of its last column
-  // and row before the first and of its first after the last: (textureWidth + 2) x
-  // (textureHeight + 2) texels, texel (x, y) at (y + 1) (textureWidth + 2) + x + 1.
-  const uint32_t* texels = nullptr;
-  int textureWidth = 0, textureHeight = 0;
 };
 
 // Colors samples [x, x + count) of row y, all covered by the face `face` (whose fans are

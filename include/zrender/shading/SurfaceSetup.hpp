@@ -68,14 +68,21 @@ class SurfaceSetup {
   struct FaceData {
     cv::Vec3f geometric;  // the face's own normal (Newell), model space
     cv::Vec3f base;       // diffuse RGB: the material's Kd, else 0.8 gray
-    bool textured;        // every corner has texture coordinates and there is a texture
+    int32_t texture;      // into textures_ when every corner has texture coordinates, else -1
+    bool allUvs;          // every corner has texture coordinates
   };
 
   const Scene& scene_;
   ShadingMode mode_;
   std::vector<CornerData> corners_;  // per mesh corner (Mesh::corners order)
   std::vector<FaceData> faces_;      // per mesh face
-  std::vector<uint32_t, UninitializedAllocator<uint32_t>> texels_;  // 0x00RRGGBB, row 0 on top
+  // The textures faces use, each framed as FaceSurface says.
+  struct Texture {
+    std::vector<uint32_t, UninitializedAllocator<uint32_t>> texels;  // 0x00RRGGBB, row 0 on top
+    int width = 0, height = 0;
+  };
+  std::vector<Texture> textures_;
+  std::vector<int32_t> instanceTextures_;  // per instance: its object's texture, else -1
 
   // Per frame.
   const std::vector<Mat4>* modelView_ = nullptr;

@@ -275,9 +275,7 @@ class SceneReader {
             fail(key + ".scale", "expected non-zero factors" + got(sc));
         }
       }
-      if (o.isMember("texture"))
-        fail(key + ".texture",
-             "an object's own texture is not supported yet (use the scene's \"texture\" key)");
+      if (o.isMember("texture")) object.texture = readPath(o["texture"], key + ".texture");
       if (o.isMember("color")) {
         const cv::Vec3d c = readVec3(o["color"], key + ".color");
         for (int a = 0; a < 3; ++a) {
