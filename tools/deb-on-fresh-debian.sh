@@ -2,7 +2,8 @@
 # Checks that the .deb installs and runs on a fresh Debian 12: debootstraps a minimal bookworm
 # (--variant=minbase, from this machine's mirror: tools/debian-mirror.sh), installs the package
 # with apt (which brings the dependencies it declares, nothing else), and renders a model file
-# to .png, .jpg, a .tif depth image and an .mp4 in a folder of its own. Needs root, network
+# to .png, .jpg, a .tif depth image and an .mp4, and an OFF file through the assimp plugin, in a
+# folder of its own. Needs root, network
 # access to the mirror and about 1.5 GB of disk; not part of CI.
 #   tools/deb-on-fresh-debian.sh [DEB [FOLDER]]   default: the newest build/zrender_*.deb,
 #                                                 /tmp/zrender-deb-debian (removed first)
@@ -34,5 +35,7 @@ chroot "$dest" bash -c 'apt-get update -qq && DEBIAN_FRONTEND=noninteractive \
   apt-get install -y -qq --no-install-recommends /tmp/zrender.deb >/dev/null'
 chroot "$dest" bash -c 'cd /root/elsewhere && zrender --version &&
   zrender shapes.obj -o a.png && zrender shapes.obj -o a.jpg --depth d.tif &&
-  zrender shapes.obj --turntable 4 -o v.mp4 && ls -l a.png a.jpg d.tif v.mp4'
+  zrender shapes.obj --turntable 4 -o v.mp4 &&
+  printf "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n" >t.off && zrender t.off -o off.png &&
+  ls -l a.png a.jpg d.tif v.mp4 off.png'
 echo "deb-on-fresh-debian: $(basename "$deb") installed and ran on a fresh bookworm in $dest ($((SECONDS / 60)) min $((SECONDS % 60)) s)"

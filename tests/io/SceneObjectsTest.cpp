@@ -15,6 +15,8 @@
 #include "zrender/base/Error.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/io/settings/SettingsFile.hpp"
+#include "zrender/render/Renderer.hpp"
+#include "zrender/scene/Camera.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
