@@ -175,9 +175,10 @@ std::string stlBinary(const Geometry& g) {
 // What a glTF file holds beyond the triangles: texture coordinates per position, a material's
 // base color factor, and its base color texture (a PNG file's bytes).
 struct GltfExtras {
-  std::vector<cv::Vec2f> uvs;      // glTF's: v down from the image's top
-  std::vector<double> baseColor;   // r, g, b, a, or empty for no material
-  std::vector<unsigned char> png;  // the texture, or empty
+  std::string nodes = "[{\"mesh\":0}]";  // the "nodes" array: one node showing the mesh
+  std::vector<cv::Vec2f> uvs;            // glTF's: v down from the image's top
+  std::vector<double> baseColor;         // r, g, b, a, or empty for no material
+  std::vector<unsigned char> png;        // the texture, or empty
 };
 
 // The JSON and the binary buffer of a glTF of triangles `g`; `uri` names the buffer (empty in
@@ -237,9 +238,10 @@ void gltfParts(const Geometry& g, const GltfExtras& extras, const std::string& u
   }
   json =
       "{\"asset\":{\"version\":\"2.0\"},\"scene\":0,\"scenes\":[{\"nodes\":[0]}],"
-      "\"nodes\":[{\"mesh\":0}],\"meshes\":[{\"primitives\":[{\"attributes\":{" +
-      attributes + "},\"indices\":1" + (material.empty() ? "" : ",\"material\":0") +
-      "}]}],\"accessors\":[" + accessors + "],\"bufferViews\":[" + views + "],\"buffers\":[{" +
+      "\"nodes\":" +
+      extras.nodes + ",\"meshes\":[{\"primitives\":[{\"attributes\":{" + attributes +
+      "},\"indices\":1" + (material.empty() ? "" : ",\"material\":0") + "}]}],\"accessors\":[" +
+      accessors + "],\"bufferViews\":[" + views + "],\"buffers\":[{" +
       (uri.empty() ? "" : "\"uri\":\"" + uri + "\",") +
       "\"byteLength\":" + std::to_string(bin.size()) + "}]" + material + textures + "}";
 }
@@ -504,7 +506,13 @@ TEST(ModelFormats, TheCommandLineSaysWhatAFileLooksLike) {
                                               dir.file("b.png"), "-o", dir.file("cb.png")});
   ASSERT_EQ(a.status, 0) << a.err;
   ASSERT_EQ(b.status, 0) << b.err;
-  EXPECT_EQ(b.err, "") << "assimp's log stays out of the terminal";
+  EXPECT_EQ(b.err, "");
+  const std::string off = dir.write("m.off", offText(g));
+  const test::RunResult c = test::runZrender({off, "--width", "64", "--height", "64", "--ids",
+                                              dir.file("c.png"), "-o", dir.file("cc.png")});
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.err, "") << "assimp's log stays out of the terminal";
+  EXPECT_EQ(test::readFile(dir.file("a.png")), test::readFile(dir.file("c.png")));
   EXPECT_EQ(test::readFile(dir.file("a.png")), test::readFile(dir.file("b.png")));
   EXPECT_EQ(test::readFile(dir.file("ca.png")), test::readFile(dir.file("cb.png")));
 }
@@ -588,6 +596,35 @@ TEST(ModelFormats, EachMaterialDrawsItsOwnTexture) {
     }
     EXPECT_GT(compared, 100u);
   }
+}
+
+}  // namespace
+}  // namespace zrender
+
+namespace zrender {
+namespace {
+
+// glTF node matrices: a node's translation and scale, and a child node's translation on top,
+// give the faces the vertices an OBJ of the moved positions has (halves and doubles: exact).
+TEST(ModelFormats, GltfNodeTransformsPlaceTheMesh) {
+  const test::TempDir dir;
+  const Geometry g = triangles(boxes());
+  GltfExtras extras;
+  extras.nodes =
+      "[{\"children\":[1],\"translation\":[0.5,0,-1],\"scale\":[2,2,2]},"
+      "{\"mesh\":0,\"translation\":[-0.25,0.5,0]}]";
+  std::string json, bin;
+  gltfParts(g, extras, "", json, bin);
+  Geometry moved = g;
+  for (Vec3& p : moved.positions) p = Vec3(0.5, 0, -1) + 2.0 * (p + Vec3(-0.25, 0.5, 0));
+  SceneSettings settings = settingsFor(dir.write("m.obj", objText(moved)), ShadingMode::Phong);
+  settings.eye = Vec3(0, 0, 6);
+  Warnings warnings;
+  const Scene reference = loadScene(settings, warnings);
+  settings.modelPath = dir.write("m.glb", glb(json, bin));
+  const Scene placed = loadScene(settings, warnings);
+  EXPECT_TRUE(warnings.empty());
+  expectSameScenes(reference, placed, "glb nodes");
 }
 
 }  // namespace

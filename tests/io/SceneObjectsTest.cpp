@@ -299,3 +299,40 @@ TEST(SceneObjects, AnObjectsTextureIsItsFacesTexture) {
 
 }  // namespace
 }  // namespace zrender
+
+namespace zrender {
+namespace {
+
+// A grid repeats the whole list of objects: cell after cell, the objects in list order in each,
+// face ids counting on; the same frame as the merged OBJ of the cells' objects.
+TEST(SceneObjects, AGridRepeatsTheWholeList) {
+  const test::TempDir dir;
+  const Shape a = box(Vec3(-0.5, -0.5, -0.5), 0.75), b = pyramid(Vec3(0, -0.5, -0.25), 0.5);
+  const std::string fileA = dir.write("a.obj", objOf({a})), fileB = dir.write("b.obj", objOf({b}));
+  SceneSettings objects = settingsFor("objects");
+  objects.eye = Vec3(0.5, 1.0, 4.0);
+  objects.objects = {SceneObject(fileA), SceneObject(fileB)};
+  objects.modelPath = fileA;
+  objects.grid = Grid{{2, 1, 1}, {2.0, 0.0, 0.0}};
+  const Scene scene = loaded(objects);
+  ASSERT_EQ(scene.instanceCount(), 4u);
+  EXPECT_EQ(scene.instances[2].firstId, uint32_t(a.faces.size() + b.faces.size()));
+  // The cells at x offsets -1 and +1: exact in double, as the grid's translation is.
+  std::vector<Shape> cells;
+  for (double dx : {-1.0, 1.0}) {
+    for (Shape s : {a, b}) {
+      for (Vec3& p : s.positions) p[0] += dx;
+      cells.push_back(s);
+    }
+  }
+  SceneSettings merged = settingsFor("merged");
+  merged.eye = objects.eye;
+  merged.modelPath = dir.write("merged.obj", objOf(cells));
+  const Scene reference = loaded(merged);
+  for (const std::string& algorithm : algorithmNames())
+    test::expectSameFrame(test::render(reference, algorithm), test::render(scene, algorithm),
+                          algorithm);
+}
+
+}  // namespace
+}  // namespace zrender
