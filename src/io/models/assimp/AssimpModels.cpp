@@ -244,9 +244,19 @@ class AssimpModels final : public ModelPlugin {
       Assimp::Importer importer;
       // No logger is attached: assimp's log is process-wide, and its messages would reach the
       // terminal; a failure's reason comes back through GetErrorString().
-      importer.SetIOHandler(new ModelFiles(path, bytes, filesBeside));
+      // assimp picks its glTF reader by the name: .glb for the binary form, .gltf for JSON.
+      // The name it reads is the file's with the extension its content calls for, in the same
+      // folder, so that the files it names are found beside it.
+      std::string name = path;
+      if (format == ModelFormat::Gltf) {
+        const size_t dot = name.find_last_of('.'), slash = name.find_last_of('/');
+        if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
+          name.resize(dot);
+        name += bytes.substr(0, 4) == "glTF" ? ".glb" : ".gltf";
+      }
+      importer.SetIOHandler(new ModelFiles(name, bytes, filesBeside));
       importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
-      const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+      const aiScene* scene = importer.ReadFile(name, aiProcess_ValidateDataStructure);
       if (scene == nullptr) {
         error = importer.GetErrorString();
         if (error.empty()) error = "assimp read nothing";
