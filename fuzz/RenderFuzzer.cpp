@@ -44,8 +44,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fail(std::string("a preset scene does not validate: ") + e.what());
   }
   try {
-    const zrender::Scene scene = zrender::makeScene(
-        input.settings, mesh, zrender::loadTexture(input.settings, *mesh, warnings));
+    zrender::Scene scene =
+        zrender::makeScene(input.settings, mesh, zrender::loadTexture(input.settings));
+    scene.materialTextures = zrender::loadMaterialTextures(*mesh, warnings);
     const std::string difference = zrender::fuzz::checkAlgorithmsAgree(scene, input.twice);
     if (!difference.empty()) fail(difference);
   } catch (const zrender::InputError&) {
