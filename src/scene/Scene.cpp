@@ -199,7 +199,6 @@ Scene makeScene(const SceneSettings& settings, std::shared_ptr<const Mesh> mesh,
   scene.settings = settings;
   scene.mesh = std::move(mesh);
   scene.models.push_back(wholeMesh(*scene.mesh));
-  scene.meshBox = scene.models.front().box;
   const std::vector<Vec3> offsets = gridOffsets(settings);
   const Mat4 rot = rotation(settings.angle, settings.axis);
   for (const Vec3& offset : offsets) {
@@ -220,7 +219,6 @@ Scene makeScene(const SceneSettings& settings, SceneMeshes meshes,
   scene.settings = settings;
   scene.mesh = std::move(meshes.mesh);
   scene.models = std::move(meshes.models);
-  scene.meshBox = boundingBox(scene.mesh->positions);
   const std::vector<Vec3> offsets = gridOffsets(settings);
   const Mat4 rot = rotation(settings.angle, settings.axis);
   std::vector<Mat4> placements;

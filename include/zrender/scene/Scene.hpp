@@ -65,7 +65,6 @@ struct Scene {
   std::vector<cv::Mat> objectTextures;    // the objects' own textures (SceneInstance::texture)
   Vec3 boundsCentre{0, 0, 0};             // bounding sphere of all instances, world space
   double boundsRadius = 0.0;
-  Box3 meshBox;  // the mesh's box, model space
 
   uint32_t instanceCount() const { return uint32_t(instances.size()); }
   uint32_t faceCount() const { return faceCount_; }

@@ -11,7 +11,7 @@ struct RowSpan {
 };
 
 // The sample rows of a `heightSamples`-row image that the scene's instances may cover seen
-// through `camera`: those of their mesh's box (Scene::meshBox), instance by instance, widened
+// through `camera`: those of their model's box (SceneModel::box), instance by instance, widened
 // by a row; every row when a box reaches the near plane or behind the eye. For cutting the
 // image into bands where the work is (threads): nothing any result depends on.
 RowSpan screenRows(const Scene& scene, const Camera& camera, int heightSamples);

@@ -52,16 +52,21 @@ std::string modelExtensionList() {
   return list;
 }
 
+uint32_t littleEndian32(std::string_view bytes, size_t at) {
+  uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = v << 8 | uint8_t(bytes[at + size_t(i)]);
+  return v;
+}
+
+bool isBinaryStl(std::string_view bytes, uint64_t fileSize) {
+  return fileSize >= 84 && bytes.size() >= 84 &&
+         84 + 50 * uint64_t(littleEndian32(bytes, 80)) == fileSize;
+}
+
 namespace {
 
 bool startsWith(std::string_view s, std::string_view prefix) {
   return s.substr(0, prefix.size()) == prefix;
-}
-
-uint32_t littleEndian32(std::string_view s, size_t at) {
-  uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = v << 8 | uint8_t(s[at + size_t(i)]);
-  return v;
 }
 
 std::string_view skipSpace(std::string_view s) {
@@ -147,10 +152,7 @@ ModelContent sniffModelContent(std::string_view head, uint64_t fileSize) {
   if (startsWith(head, "ply\n") || startsWith(head, "ply\r"))
     return {ModelFormat::Ply, "a PLY model"};
   if (startsWith(head, "Kaydara FBX Binary")) return {ModelFormat::Fbx, "an FBX model"};
-  // Binary STL: an 80-byte header, a triangle count, then 50 bytes per triangle, exactly.
-  if (fileSize >= 84 && head.size() >= 84 &&
-      84 + 50 * uint64_t(littleEndian32(head, 80)) == fileSize)
-    return {ModelFormat::Stl, "a binary STL model"};
+  if (isBinaryStl(head, fileSize)) return {ModelFormat::Stl, "a binary STL model"};
   // 3DS: a main chunk (0x4D4D) whose length is at most the file's.
   if (head.size() >= 6 && uint8_t(head[0]) == 0x4D && uint8_t(head[1]) == 0x4D) {
     const uint32_t length = littleEndian32(head, 2);

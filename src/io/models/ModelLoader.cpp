@@ -74,12 +74,6 @@ void checkOffCounts(const std::string& file, std::string_view bytes) {
   }
 }
 
-uint32_t littleEndian32(std::string_view bytes, size_t at) {
-  uint32_t v = 0;
-  for (int i = 3; i >= 0; --i) v = v << 8 | uint8_t(bytes[at + size_t(i)]);
-  return v;
-}
-
 // A binary glTF's chunks lie within the file: assimp 5.2 allocates a chunk's length as its
 // header says before it reads it.
 void checkGlbChunks(const std::string& file, std::string_view bytes) {

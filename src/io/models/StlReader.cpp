@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/io/models/ModelFormats.hpp"
 #include "zrender/io/models/PositionIndex.hpp"
 #include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/io/obj/ObjScanner.hpp"
@@ -13,16 +14,8 @@ namespace zrender {
 
 namespace {
 
-bool isBinaryStl(std::string_view bytes) {
-  if (bytes.size() < 84) return false;
-  uint32_t count = 0;
-  std::memcpy(&count, bytes.data() + 80, 4);  // little-endian, as x86-64
-  return 84 + 50 * uint64_t(count) == bytes.size();
-}
-
 Mesh readBinary(std::string_view bytes) {
-  uint32_t count = 0;
-  std::memcpy(&count, bytes.data() + 80, 4);
+  const uint32_t count = littleEndian32(bytes, 80);
   Mesh mesh;
   PositionIndex index(mesh.positions);
   mesh.corners.reserve(size_t(count) * 3);
@@ -109,7 +102,7 @@ class AsciiStl {
 }  // namespace
 
 Mesh readStl(std::string_view bytes, const std::string& file) {
-  if (isBinaryStl(bytes)) return readBinary(bytes);
+  if (isBinaryStl(bytes, bytes.size())) return readBinary(bytes);
   return AsciiStl(bytes, file).read();
 }
 

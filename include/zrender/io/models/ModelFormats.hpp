@@ -32,6 +32,13 @@ std::optional<ModelFormat> modelFormatOfPath(const std::filesystem::path& path);
 // "obj, ply, stl, off, gltf, glb, fbx, dae, 3ds": the extensions zrender reads.
 std::string modelExtensionList();
 
+// The unsigned 32-bit little-endian number at byte `at` of `bytes` (at + 4 <= size).
+uint32_t littleEndian32(std::string_view bytes, size_t at);
+
+// Whether `bytes` (a whole file, or its first 84 bytes with `fileSize`) are a binary STL: an
+// 80-byte header, a triangle count, then 50 bytes per triangle, exactly.
+bool isBinaryStl(std::string_view bytes, uint64_t fileSize);
+
 // What a file's first bytes (`head`, up to kModelHeadBytes of them) look like, for a file of
 // `fileSize` bytes: the model format when they are one's, and words for a message ("a PNG
 // image", "a PLY model", "text", "binary data").
