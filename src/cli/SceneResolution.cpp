@@ -137,6 +137,7 @@ SceneSettings resolveScene(const std::string& scene, const std::optional<fs::pat
     if (it != file.scenes.end()) {
       result = it->second;
       where = settingsPath.string() + ": scene '" + scene + "'";
+      result.where = where;
       found = true;
     }
     // The first few names: a file may hold any number.

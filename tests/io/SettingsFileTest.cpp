@@ -224,3 +224,48 @@ TEST(SettingsFile, LoadSettingsMissingFile) {
 
 }  // namespace
 }  // namespace zrender
+
+namespace zrender {
+namespace {
+
+TEST(SettingsFile, ViewsInFullOrRelative) {
+  Warnings warnings;
+  const SettingsFile file = test::parse(test::bunnyWith(R"("views": [
+      {"azimuth": 30, "elevation": -10.5, "zoom": 2},
+      {"eye": [1, 2, 3], "target": [0, 1, 0], "up": [0, 0, 1]},
+      {}, {"tilt": 3}])"),
+                                        warnings);
+  const std::vector<ViewSpec>& views = file.scenes.at("bunny").views;
+  ASSERT_EQ(views.size(), 4u);
+  EXPECT_EQ(views[0].azimuth, 30.0);
+  EXPECT_EQ(views[0].elevation, -10.5);
+  EXPECT_EQ(views[0].zoom, 2.0);
+  EXPECT_FALSE(views[0].givesCamera());
+  EXPECT_EQ(*views[1].eye, cv::Vec3d(1, 2, 3));
+  EXPECT_EQ(*views[1].target, cv::Vec3d(0, 1, 0));
+  EXPECT_EQ(*views[1].up, cv::Vec3d(0, 0, 1));
+  EXPECT_EQ(views[2].zoom, 1.0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "settings.json: scene 'bunny': unknown key 'views[3].tilt' (ignored)");
+}
+
+TEST(SettingsFile, BadViewsNameTheKey) {
+  const std::string where = "settings.json: scene 'bunny': key ";
+  EXPECT_EQ(test::bunnyError(R"("views": [])"),
+            where + "'views': expected a non-empty array of views, got []");
+  EXPECT_EQ(test::bunnyError(R"("views": [{}, 3])"),
+            where +
+                "'views[1]': expected an object of eye, target, up, azimuth, elevation, "
+                "zoom, got 3");
+  EXPECT_EQ(test::bunnyError(R"("views": [{"zoom": 0}])"),
+            where + "'views[0].zoom': expected a number above 0, got 0");
+  EXPECT_EQ(test::bunnyError(R"("views": [{"azimuth": "east"}])"),
+            where + "'views[0].azimuth': expected a finite number, got \"east\"");
+  EXPECT_EQ(test::bunnyError(R"("views": [{"eye": [1, 2]}])"),
+            where + "'views[0].eye': expected an array of 3 finite numbers, got [1, 2]");
+  EXPECT_NE(test::bunnyError(R"("views": [{"up": [0, 0, 0]}])").find("'views[0].up'"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace zrender

@@ -24,9 +24,18 @@ struct Camera {
 // scene without `eye` looks down -Z. Throws InputError when what is kept and what fit supplies
 // do not make a camera (a near beyond fit's far, an eye at the model's centre).
 Camera makeCamera(const Scene& scene);
+// The same with the camera values of `settings` in place of the scene's own.
+Camera makeCamera(const Scene& scene, const SceneSettings& settings);
 
 // The camera of turntable frame at `degrees`: the model turned about the camera's up axis
 // through the target (right-hand rule), which is the view composed with that rotation.
 Camera turntableCamera(const Camera& camera, double degrees);
+
+// The camera of view `view` of a run (docs/design.md, Views): `base` (the scene's camera), or
+// the scene's camera with the view's eye, target and up when it gives any, turned about its
+// target and zoomed. `where` names the view in messages ("settings.json: scene 'bunny': key
+// 'views[2]'"); InputError when the view's camera values do not make a camera.
+Camera viewCamera(const Scene& scene, const Camera& base, const ViewSpec& view,
+                  const std::string& where);
 
 }  // namespace zrender

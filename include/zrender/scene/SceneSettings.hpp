@@ -36,6 +36,18 @@ struct SceneObject {
   std::optional<std::filesystem::path> texture;  // its faces' texture, else their materials'
 };
 
+// One view of a run (settings key `views`, --azimuth, --orbit: docs/design.md, Views). A camera
+// value given replaces the scene's (and fit frames the view as it frames the scene, keeping what
+// the view gives); then the eye turns about the target by `azimuth` about the up axis and by
+// `elevation` toward it, and the image is magnified by `zoom`.
+struct ViewSpec {
+  std::optional<cv::Vec3d> eye, target, up;  // world space
+  double azimuth = 0.0;                      // degrees, right-hand rule about up
+  double elevation = 0.0;                    // degrees: positive raises the eye
+  double zoom = 1.0;                         // > 0: the focal length times zoom
+  bool givesCamera() const { return eye || target || up; }
+};
+
 // The camera values `fit` leaves as they are. A settings scene's "fit": true and --fit frame
 // the model on their own (docs/design.md, Camera and transforms: none kept); a model file named on
 // the command line is framed around the camera options the user typed (docs: the camera rule).
@@ -46,6 +58,8 @@ struct FitKeeps {
 // One scene of settings.json with every default (docs/design.md, Settings) filled in.
 struct SceneSettings {
   std::string name;
+  // What messages about its keys name: "settings.json: scene 'bunny'" (empty for a model file).
+  std::string where;
   std::filesystem::path modelPath;  // resolved against the settings file's folder
   // A scene of many objects (docs/design.md, Settings: `objects`); when there are any, they are
   // the scene and modelPath is the first one's path (for messages).
@@ -69,6 +83,7 @@ struct SceneSettings {
   std::optional<std::filesystem::path> texture;  // overrides the material's map_Kd
   std::array<int, 3> background{0, 0, 0};        // r, g, b in 0..255
   std::optional<Grid> grid;
+  std::vector<ViewSpec> views;  // none: the scene's camera alone
   bool bench = false;
 };
 

@@ -34,11 +34,13 @@ constexpr std::size_t kMaxExcerpt = 60;
 
 // Keys of a scene and of its grid (docs/design.md, Settings); any other key is warned about and
 // ignored.
-const std::set<std::string> kSceneKeys{
-    "path", "width",   "height", "eye",  "target",  "up",         "angle", "axis",  "project",
-    "fit",  "shading", "msaa",   "cull", "texture", "background", "grid",  "bench", "objects"};
+const std::set<std::string> kSceneKeys{"path",    "width", "height",  "eye",     "target",
+                                       "up",      "angle", "axis",    "project", "fit",
+                                       "shading", "msaa",  "cull",    "texture", "background",
+                                       "grid",    "bench", "objects", "views"};
 const std::set<std::string> kObjectKeys{"path", "translate", "rotate", "scale", "texture", "color"};
 const std::set<std::string> kGridKeys{"count", "spacing"};
+const std::set<std::string> kViewKeys{"eye", "target", "up", "azimuth", "elevation", "zoom"};
 
 // jsoncpp reports "* Line 3, Column 5\n  Syntax error: ...\n* Line ...": keep the first error and
 // make it one line: "line 3, column 5: Syntax error: ...".
@@ -289,6 +291,40 @@ class SceneReader {
     return objects;
   }
 
+  // The "views" list: each a camera in full, or relative to the scene's (docs/design.md, Views).
+  std::vector<ViewSpec> readViews(const Json::Value& v, Warnings& warnings) const {
+    if (!v.isArray() || v.empty()) fail("views", "expected a non-empty array of views" + got(v));
+    std::vector<ViewSpec> views;
+    for (Json::ArrayIndex i = 0; i < v.size(); ++i) {
+      const Json::Value& o = v[i];
+      const std::string key = "views[" + std::to_string(i) + "]";
+      if (!o.isObject()) {
+        fail(key, "expected an object of eye, target, up, azimuth, elevation, zoom" + got(o));
+      }
+      for (const auto& name : o.getMemberNames()) {
+        if (!kViewKeys.count(name)) {
+          warnings.push_back(where_ + ": unknown key '" + key + "." + printable(name) +
+                             "' (ignored)");
+        }
+      }
+      ViewSpec view;
+      if (o.isMember("eye")) view.eye = readVec3(o["eye"], key + ".eye");
+      if (o.isMember("target")) view.target = readVec3(o["target"], key + ".target");
+      if (o.isMember("up")) {
+        view.up = readVec3(o["up"], key + ".up");
+        checkDirection(where_, key + ".up", *view.up);
+      }
+      if (o.isMember("azimuth")) view.azimuth = readNumber(o["azimuth"], key + ".azimuth");
+      if (o.isMember("elevation")) view.elevation = readNumber(o["elevation"], key + ".elevation");
+      if (o.isMember("zoom")) {
+        view.zoom = readNumber(o["zoom"], key + ".zoom");
+        if (!(view.zoom > 0.0)) fail(key + ".zoom", "expected a number above 0" + got(o["zoom"]));
+      }
+      views.push_back(view);
+    }
+    return views;
+  }
+
   std::string_view text_;  // the parsed JSON, which value offsets index
   fs::path folder_;
   std::string where_;
@@ -333,6 +369,7 @@ SceneSettings SceneReader::read(const std::string& name, const Json::Value& obje
   if (object.isMember("background")) scene.background = readBackground(object["background"]);
   if (object.isMember("grid")) scene.grid = readGrid(object["grid"], warnings);
   if (object.isMember("bench")) scene.bench = readBool(object["bench"], "bench");
+  if (object.isMember("views")) scene.views = readViews(object["views"], warnings);
   return scene;
 }
 
