@@ -127,15 +127,23 @@ constexpr float kTopChannel = 255.5f;
   return fan;
 }
 
-// The packed color (0x00RRGGBB) of sample (x, y) of the face.
-[[gnu::always_inline]] inline uint32_t shadeSample(const SurfaceFrame& f, const FaceSurface& face,
-                                                   const SurfaceFan* fans, int x, int y) {
+// The normal (up to a positive factor, +Z where it vanishes) and texture coordinates at sample
+// (x, y) of the face; returns the normal's squared length.
+[[gnu::always_inline]] inline float surfaceAt(const FaceSurface& face, const SurfaceFan* fans,
+                                              int x, int y, float m[3], float uv[2]) {
   const float sx = float(x - face.originX), sy = float(y - face.originY);
   const SurfaceFan* fan = face.fanCount > 1 ? fanAt(face, fans, sx, sy) : fans;
-  float m[3], uv[2];
   attributesAt(*fan, sx, sy, m, uv);
   float length2 = std::fma(m[0], m[0], std::fma(m[1], m[1], m[2] * m[2]));
   if (!(length2 > 0.0f)) m[0] = 0.0f, m[1] = 0.0f, m[2] = 1.0f, length2 = 1.0f;  // +Z
+  return length2;
+}
+
+// The packed color (0x00RRGGBB) of sample (x, y) of the face.
+[[gnu::always_inline]] inline uint32_t shadeSample(const SurfaceFrame& f, const FaceSurface& face,
+                                                   const SurfaceFan* fans, int x, int y) {
+  float m[3], uv[2];
+  const float length2 = surfaceAt(face, fans, x, y, m, uv);
   float t[3];
   if (f.mode == ShadingMode::Normal) {
     // (n + 1) / 2 of the unit normal n, times 255, plus 0.5.

@@ -48,6 +48,14 @@ void filterRow(const cv::Mat& image, int y, BgrToRgb toRgb, unsigned char* out) 
     toRgb(in, samples, size_t(image.cols));
   } else if (image.type() == CV_16UC1) {
     for (size_t i = 0; i < n; i += 2) samples[i] = in[i + 1], samples[i + 1] = in[i];
+  } else if (image.type() == CV_16UC3) {
+    // B, G, R little-endian words to R, G, B big-endian ones.
+    for (size_t i = 0; i < n; i += 6) {
+      for (size_t c = 0; c < 3; ++c) {
+        samples[i + 2 * c] = in[i + 2 * (2 - c) + 1];
+        samples[i + 2 * c + 1] = in[i + 2 * (2 - c)];
+      }
+    }
   } else {
     std::memcpy(samples, in, n);
   }
@@ -180,7 +188,7 @@ bool writeIdat(std::FILE* file, const std::vector<Piece>& pieces) {
 
 bool pngCanHold(const cv::Mat& image) {
   const int f = image.type();
-  return !image.empty() && (f == CV_8UC3 || f == CV_8UC1 || f == CV_16UC1);
+  return !image.empty() && (f == CV_8UC3 || f == CV_8UC1 || f == CV_16UC1 || f == CV_16UC3);
 }
 
 bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, std::string& error,
@@ -189,11 +197,11 @@ bool encodePng(std::FILE* file, const cv::Mat& image, const Threads& threads, st
   const int rowsPerStrip = int(std::clamp<size_t>(stripBytes / rowBytes, 1, size_t(image.rows)));
   const size_t stripCount = (size_t(image.rows) + size_t(rowsPerStrip) - 1) / size_t(rowsPerStrip);
 
-  const bool gray = image.type() != CV_8UC3;
+  const bool gray = image.channels() == 1;
   unsigned char header[13];
   putBigEndian32(header, uint32_t(image.cols));
   putBigEndian32(header + 4, uint32_t(image.rows));
-  header[8] = uint8_t(image.type() == CV_16UC1 ? 16 : 8);  // bits per sample
+  header[8] = uint8_t(image.depth() == CV_16U ? 16 : 8);  // bits per sample
   header[9] = uint8_t(gray ? kColorGray : kColorRgb);
   header[10] = header[11] = header[12] = 0;  // deflate, adaptive filtering, no interlace
   const auto failed = [&] {
