@@ -12,14 +12,10 @@ for alg in zbuffer scanline interval hierarchical octree; do
 done
 $z spot --shading texture -o assets/spot.png --width 900 --height 900
 $z teapot --shading phong -o assets/teapot.png --width 900 --height 900
-# MSAA: the teapot's lid at a low resolution, one and four samples per pixel.
-$z teapot --shading flat --width 160 --height 120 --eye 1.2,4.2,4.5 --target 0.6,2.6,0 \
-  -o assets/msaa1.png
-$z teapot --shading flat --width 160 --height 120 --eye 1.2,4.2,4.5 --target 0.6,2.6,0 \
-  --msaa 4 -o assets/msaa4.png
-$z spot --shading texture --turntable 12 -o "/tmp/zrender-turntable-%02d.png" \
-  --contact-sheet assets/turntable.png --width 300 --height 300
-rm -f /tmp/zrender-turntable-*.png
+# Many views: an orbit in two rings, tiled.
+$z spot --fit --shading texture --orbit 6 --orbit-elevations 0,40 \
+  -o "/tmp/zrender-orbit-{view:02}.png" --contact-sheet assets/orbit.png --width 300 --height 300 -q
+rm -f /tmp/zrender-orbit-*.png
 # Polygons drawn natively by the scan-line algorithms, triangulated by the others.
 $z shapes -o assets/shapes.png
 $z crowd -o assets/crowd.png --width 900 --height 900

@@ -193,19 +193,48 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
                  "a scene of settings.json, or model files (several: one scene of them all)")
       ->required();
   app.add_option("-a,--alg", options.algorithm, "zbuffer scanline interval hierarchical octree");
-  app.add_option("-o,--output", options.output, "color image (.png .jpg .bmp .ppm .tif)");
+  app.add_option("-o,--output", options.output,
+                 "color image (.png .jpg .bmp .ppm .tif); names take {scene} {alg} {shading} "
+                 "{view} {view:03}");
   app.add_option("--depth", options.depth, "depth image (.tif/.exr 32-bit float, .png 16-bit)");
   app.add_option("--ids", options.ids, "face-id image (.png)");
   app.add_option("--repeat", options.repeat, "render N times; timings are the median")
       ->check(CLI::Range(1, 100000));
   app.add_flag("--json", options.json, "print one JSON object per image on stdout");
   app.add_flag("--stats", options.stats, "print the culling statistics");
-  app.add_option("--turntable", options.turntable, "N frames turning the model once")
-      ->check(CLI::Range(1, 100000));
-  app.add_option("--contact-sheet", options.contactSheet, "tile turntable frames into one PNG");
+  app.add_option("--normals", options.normals,
+                 "view-space normals (.exr/.tif 32-bit float, .png 16-bit)");
+  app.add_flag("-q,--quiet", options.quiet, "no summary line, warnings or progress on stderr");
+  CLI::Option* turntable =
+      app.add_option("--turntable", options.turntable, "N frames turning the model once")
+          ->check(CLI::Range(1, 1000000));
+  app.add_option("--orbit", options.orbit, "N views around the up axis")
+      ->check(CLI::Range(1, 1000000))
+      ->excludes(turntable);
+  app.add_option("--orbit-elevations", options.orbitElevations,
+                 "one ring of --orbit views per elevation, degrees")
+      ->delimiter(',')
+      ->type_name("A,B,...")
+      ->check(CLI::Range(-1e6, 1e6));
+  app.add_option("--azimuth", options.azimuth, "turn the eye about the up axis, degrees")
+      ->check(CLI::Range(-1e6, 1e6));
+  app.add_option("--elevation", options.elevation, "raise the eye toward the up axis, degrees")
+      ->check(CLI::Range(-1e6, 1e6));
+  app.add_option("--zoom", options.zoom, "magnify the view by F (the focal length times F)")
+      ->check(CLI::Range(1e-6, 1e6));
+  app.add_option("--frames", options.frames, "render views A to B-1 only")->type_name("A:B");
+  app.add_option("--shard", options.shard, "render the I-th of N parts of the views (from 0)")
+      ->type_name("I/N");
+  app.add_flag("--skip-existing", options.skipExisting, "leave out views whose files all exist");
+  app.add_option("--cameras", options.cameras,
+                 "write every view's camera and files (transforms.json form)");
+  app.add_flag("--cameras-only", options.camerasOnly, "write --cameras, render nothing");
+  app.add_option("--progress", options.progress, "auto bar lines none (default auto)")
+      ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
+  app.add_option("--contact-sheet", options.contactSheet, "tile the views into one PNG");
   options.threads = hardwareThreads();
   app.add_option("--threads", options.threads,
-                 "threads (default: the machine's); a turntable's frames run at once")
+                 "threads (default: the machine's); several views run at once")
       ->check(CLI::Range(1, kMaxThreads));
   addSceneOptions(app, options.overrides, vectors, options.settings);
   if (!parseArguments(app, argc, argv, out)) return 0;

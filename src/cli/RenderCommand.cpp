@@ -13,8 +13,11 @@
 #include "zrender/base/InOrderPipeline.hpp"
 #include "zrender/base/SideBySide.hpp"
 #include "zrender/base/Threads.hpp"
+#include "zrender/cli/CameraManifest.hpp"
+#include "zrender/cli/Progress.hpp"
 #include "zrender/cli/RenderOutputs.hpp"
 #include "zrender/cli/Report.hpp"
+#include "zrender/cli/ViewPlan.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/io/images/Drawing.hpp"
 #include "zrender/io/images/ImageCodecs.hpp"
@@ -22,6 +25,7 @@
 #include "zrender/render/FrameMemory.hpp"
 #include "zrender/render/Renderer.hpp"
 #include "zrender/scene/Camera.hpp"
+#include "zrender/shading/NormalImage.hpp"
 
 namespace zrender {
 
@@ -65,17 +69,20 @@ FrameReport renderRepeated(Renderer& renderer, const Camera& camera, int repeat)
   return report;
 }
 
-// One --json line: the frame's scene, sizes, counts and times (docs/design.md, Timings and JSON).
-// `frame` is given for a turntable's frames only.
+// One --json line: the frame's scene, sizes, counts, times and files (docs/design.md, Timings
+// and JSON). `view` is given for runs of several views.
 Json::Value frameJson(const Scene& scene, const Renderer& renderer, const FrameReport& report,
-                      const RenderOptions& options, int threads, const size_t* frame, double loadMs,
-                      double startMs) {
+                      const RenderOptions& options, int threads, const size_t* view,
+                      const ViewFiles& files, double loadMs, double startMs) {
   const SceneSettings& settings = scene.settings;
   Json::Value j(Json::objectValue);
   j["scene"] = settings.name;
   j["algorithm"] = renderer.algorithm().name();
   j["threads"] = threads;
-  if (frame) j["frame"] = Json::UInt64(*frame);
+  if (view) {
+    j["view"] = Json::UInt64(*view);
+    if (options.turntable > 0) j["frame"] = Json::UInt64(*view);
+  }
   j["width"] = settings.width;
   j["height"] = settings.height;
   j["msaa"] = settings.msaa;
@@ -95,20 +102,64 @@ Json::Value frameJson(const Scene& scene, const Renderer& renderer, const FrameR
   j["total_ms"] = nowMs() - startMs;
   j["peak_rss_mb"] = peakRssMb();
   j["stats"] = statsToJson(renderer.stats());
+  Json::Value written(Json::objectValue);
+  if (!files.color.empty()) written["color"] = files.color.string();
+  if (files.depth) written["depth"] = files.depth->string();
+  if (files.ids) written["ids"] = files.ids->string();
+  if (files.normals) written["normals"] = files.normals->string();
+  j["files"] = written;
   return j;
 }
 
-// A frame's own files: its color image (unless the frames make a video), depth and ids.
-void writeFrameFiles(const RenderOutputs& outputs, const Renderer& renderer, int frame) {
+// A view's own files: its color image (unless the views make a video), depth, ids, normals.
+void writeViewFiles(const ViewFiles& files, const Scene& scene, const Camera& camera,
+                    const Renderer& renderer) {
   const Threads* threads = &renderer.threadPool();
-  if (!outputs.video) writeImageAtomically(outputs.colorOf(frame), renderer.color(), threads);
-  if (outputs.depth) {
-    const bool sixteenBit = lowerExtension(*outputs.depth) == ".png";
+  if (!files.color.empty()) writeImageAtomically(files.color, renderer.color(), threads);
+  if (files.depth) {
+    const bool sixteenBit = lowerExtension(*files.depth) == ".png";
     writeImageAtomically(
-        *outputs.depth, depthImage(renderer.buffer(), renderer.sampleScale(), sixteenBit), threads);
+        *files.depth, depthImage(renderer.buffer(), renderer.sampleScale(), sixteenBit), threads);
   }
-  if (outputs.ids)
-    writeImageAtomically(*outputs.ids, idImage(renderer.buffer(), renderer.sampleScale()), threads);
+  if (files.ids)
+    writeImageAtomically(*files.ids, idImage(renderer.buffer(), renderer.sampleScale()), threads);
+  if (files.normals) {
+    const cv::Mat normals = normalImage(scene, renderer.buffer(), camera, renderer.sampleScale());
+    writeImageAtomically(
+        *files.normals, lowerExtension(*files.normals) == ".png" ? normalImage16(normals) : normals,
+        threads);
+  }
+}
+
+// A line on stderr at most this often with --progress lines, milliseconds.
+constexpr double kProgressIntervalMs = 5000.0;
+
+// Whether every file of a view is there (--skip-existing): each is written whole or not at
+// all, so one that exists is complete.
+bool viewWritten(const ViewFiles& files) {
+  std::error_code ec;
+  for (const NamedOutput& n : files.named())
+    if (!std::filesystem::is_regular_file(n.path, ec)) return false;
+  return true;
+}
+
+// The names in a summary: the files of one view, or the patterns of several.
+std::string outputNames(const RenderOutputs& outputs, bool multi, const ViewFiles& one) {
+  std::vector<std::string> names;
+  if (outputs.video || !multi) {
+    if (outputs.video) names.push_back(outputs.color.pattern());
+    for (const NamedOutput& n : one.named()) names.push_back(n.path.string());
+  } else {
+    names.push_back(outputs.color.pattern());
+    for (const auto& t : {outputs.depth, outputs.ids, outputs.normals})
+      if (t) names.push_back(t->pattern());
+  }
+  if (outputs.contactSheet) names.push_back(outputs.contactSheet->string());
+  if (outputs.cameras) names.push_back(outputs.cameras->string());
+  std::string text;
+  for (size_t i = 0; i < names.size(); ++i)
+    text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  return text;
 }
 
 // The renderers of a run, one per frame in flight. A turntable with at least as many frames as
@@ -156,6 +207,47 @@ struct FrameSlots {
   int rendererThreads_ = 1;
 };
 
+// The line a successful run ends with: what it wrote, the image, the algorithm and the frame
+// time (docs/design.md, Views: what the terminal shows).
+std::string summaryLine(const RenderOutputs& outputs, const ViewPlan& plan,
+                        const std::vector<size_t>& views, size_t skipped,
+                        const std::vector<double>& frameMs, const SceneSettings& settings,
+                        double renderMs) {
+  char text[160];
+  std::string line = "zrender: ";
+  if (views.empty()) {
+    line += outputs.cameras ? "wrote " + outputs.cameras->string() : std::string("wrote nothing");
+    std::snprintf(text, sizeof text, " (%zu views; %zu of views %zu-%zu already written)",
+                  plan.views.size(), skipped, plan.first, plan.end - 1);
+    return line + (skipped ? text : " (" + std::to_string(plan.views.size()) + " views)");
+  }
+  const bool multi = plan.multiView;
+  if (multi) {
+    std::snprintf(text, sizeof text, "wrote %zu view%s", views.size(),
+                  views.size() == 1 ? "" : "s");
+    line += text;
+    if (!plan.whole() || skipped) {
+      std::snprintf(text, sizeof text, " of %zu-%zu", plan.first, plan.end - 1);
+      line += text;
+    }
+    if (skipped) line += " (" + std::to_string(skipped) + " already written)";
+    line += " to ";
+  } else {
+    line += "wrote ";
+  }
+  line += outputNames(outputs, multi, outputs.filesOf(views.front()));
+  std::snprintf(text, sizeof text, " (%dx%d, %s, ", settings.width, settings.height,
+                outputs.fields.algorithm.c_str());
+  line += text;
+  if (multi) {
+    std::snprintf(text, sizeof text, "frame %.1f ms median, %.1f views/s)", median(frameMs),
+                  1000.0 * double(views.size()) / renderMs);
+  } else {
+    std::snprintf(text, sizeof text, "frame %.1f ms)", frameMs.front());
+  }
+  return line + text;
+}
+
 }  // namespace
 
 int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err) {
@@ -168,38 +260,65 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   makeAlgorithm(options.algorithm);  // an unknown name fails before any loading
   const SceneSettings settings = resolveScene(options.scene, options.settings, options.overrides,
                                               warnings, options.moreModels);
+  if (options.quiet) warnings.clear();
   printWarnings(warnings, err);
-  const RenderOutputs outputs = planOutputs(options, settings.name);
+  const ViewPlan plan = planViews(options, settings);
+  const RenderOutputs outputs = planOutputs(options, plan, settings);
+  if (outputs.cameras && outputs.video)
+    throw InputError("command line: --cameras names each view's image: not with a video");
 
   const double loadStart = nowMs();
   const Scene scene = loadScene(settings, warnings, &threads);
   const double loadMs = nowMs() - loadStart;
+  if (options.quiet) warnings.clear();
   printWarnings(warnings, err);
-  checkWritable(outputs);
 
-  FrameSlots slots(scene, options.algorithm, threads, outputs.frames);
-  std::unique_ptr<VideoOutput> video;
-  if (outputs.video)
-    video = std::make_unique<VideoOutput>(outputs.color, settings.width, settings.height);
-  std::vector<cv::Mat> sheet(outputs.contactSheet ? size_t(outputs.frames) : 0);
+  // Every view's camera, so that a bad one fails before any frame and the manifest holds all.
   const Camera baseCamera = makeCamera(scene);
-  const bool progress = outputs.turntable && isatty(STDERR_FILENO);
+  std::vector<Camera> cameras;
+  cameras.reserve(plan.views.size());
+  for (size_t v = 0; v < plan.views.size(); ++v)
+    cameras.push_back(viewCamera(scene, baseCamera, plan.views[v], plan.origins[v]));
 
-  // Renders a frame and writes its own files: on any thread, several frames at once.
-  const auto render = [&](size_t frame, size_t slot) {
+  // This run's views: its part, less those already written with --skip-existing.
+  std::vector<size_t> views;
+  size_t skipped = 0;
+  if (!options.camerasOnly) {
+    for (size_t v = plan.first; v < plan.end; ++v) {
+      if (options.skipExisting && viewWritten(outputs.filesOf(v)))
+        ++skipped;
+      else
+        views.push_back(v);
+    }
+  }
+  checkWritable(outputs, views);
+
+  const bool multi = plan.multiView;
+  FrameSlots slots(scene, options.algorithm, threads, int(views.size()));
+  std::unique_ptr<VideoOutput> video;
+  if (outputs.video && !views.empty())
+    video = std::make_unique<VideoOutput>(outputs.color.pattern(), settings.width, settings.height);
+  std::vector<cv::Mat> sheet(outputs.contactSheet ? views.size() : 0);
+  std::vector<double> frameMs(views.size());
+  Progress progress(err,
+                    options.quiet
+                        ? ProgressMode::None
+                        : progressMode(options.progress, isatty(STDERR_FILENO), views.size()),
+                    views.size(), kProgressIntervalMs, nowMs);
+
+  // Renders a view and writes its own files: on any thread, several views at once.
+  const auto render = [&](size_t i, size_t slot) {
     Renderer& renderer = slots.renderer(slot);
-    const Camera camera = outputs.turntable
-                              ? turntableCamera(baseCamera, 360.0 * frame / outputs.frames)
-                              : baseCamera;
+    const Camera& camera = cameras[views[i]];
     FrameReport& report = slots.reports[slot];
     report = renderRepeated(renderer, camera, options.repeat);
     const double writeStart = nowMs();
-    writeFrameFiles(outputs, renderer, int(frame));
-    if (outputs.contactSheet) sheet[frame] = renderer.color().clone();
+    writeViewFiles(outputs.filesOf(views[i]), scene, camera, renderer);
+    if (outputs.contactSheet) sheet[i] = renderer.color().clone();
     report.writeMs = nowMs() - writeStart;
   };
-  // What must come in frame order: the video, the JSON lines, the statistics, the progress.
-  const auto finish = [&](size_t frame, size_t slot) {
+  // What must come in view order: the video, the JSON lines, the statistics, the progress.
+  const auto finish = [&](size_t i, size_t slot) {
     const Renderer& renderer = *slots.renderers[slot];
     FrameReport& report = slots.reports[slot];
     if (video) {
@@ -207,21 +326,31 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
       video->add(renderer.color());
       report.writeMs += nowMs() - writeStart;
     }
+    frameMs[i] = report.frameMs;
     if (options.json) {
       out << toJsonLine(frameJson(scene, renderer, report, options, threads.count(),
-                                  outputs.turntable ? &frame : nullptr, loadMs, start))
+                                  multi ? &views[i] : nullptr, outputs.filesOf(views[i]), loadMs,
+                                  start))
           << "\n";
     }
     if (options.stats) printStats(renderer.stats(), report.medians, options.json ? err : out);
-    if (progress) err << "\rzrender: frame " << (frame + 1) << "/" << outputs.frames << std::flush;
+    progress.viewDone();
   };
-  slots.prepare();
-  pipelineInOrder(threads, size_t(outputs.frames), slots.renderers.size(), render, finish);
-  if (progress) err << "\r" << std::string(40, ' ') << "\r";
+  if (!views.empty()) slots.prepare();
+  const double renderStart = nowMs();
+  pipelineInOrder(threads, views.size(), slots.renderers.size(), render, finish);
+  progress.finish();
 
   if (video) video->finish();
   if (outputs.contactSheet)
     writeImageAtomically(*outputs.contactSheet, contactSheet(sheet), &threads);
+  if (outputs.cameras) {
+    writeFileAtomically(*outputs.cameras, manifestText(cameraManifest(
+                                              cameras, outputs, *outputs.cameras, settings.msaa)));
+  }
+  if (!options.quiet)
+    err << summaryLine(outputs, plan, views, skipped, frameMs, settings, nowMs() - renderStart)
+        << "\n";
   return 0;
 }
 

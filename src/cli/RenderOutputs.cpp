@@ -1,12 +1,11 @@
 #include "zrender/cli/RenderOutputs.hpp"
 
-#include <cctype>
-#include <cstdio>
-#include <vector>
+#include <set>
 
 #include "zrender/base/Error.hpp"
 #include "zrender/io/images/ImageOutput.hpp"
 #include "zrender/io/images/VideoContainer.hpp"
+#include "zrender/scene/ShadingMode.hpp"
 
 namespace zrender {
 
@@ -19,74 +18,109 @@ bool isVideo(const fs::path& p) {
   return ext == ".mp4" || ext == ".avi";
 }
 
-// A turntable's -o pattern must hold exactly one integer directive (%d, %03d, ...) so that
-// snprintf with one int argument is safe; "%%" stands for a literal percent sign.
-void checkFramePattern(const std::string& pattern) {
-  const InputError bad(
-      "command line: -o: turntable frames need a pattern with one %d (like frames/%03d.png) or "
-      "a .mp4/.avi file, got '" +
-      pattern + "'");
-  int directives = 0;
-  for (size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') continue;
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      ++i;
-      continue;
-    }
-    size_t j = i + 1;
-    if (j < pattern.size() && pattern[j] == '0') ++j;
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j;
-    if (j >= pattern.size() || pattern[j] != 'd' || j - i > 4) throw bad;
-    ++directives;
-    i = j;
-  }
-  if (directives != 1) throw bad;
+// Several views need {view} in a name that each view writes.
+void checkViewField(const NameTemplate& name, const std::string& option, const char* example) {
+  if (name.hasView()) return;
+  throw InputError("command line: " + option + ": several views need {view} in the name (like " +
+                   example + "), got '" + name.pattern() + "'");
 }
 
 }  // namespace
 
-fs::path RenderOutputs::colorOf(int frame) const {
-  if (!turntable || video) return color;
-  const std::string pattern = color.string();
-  std::vector<char> buf(pattern.size() + 32);
-  std::snprintf(buf.data(), buf.size(), pattern.c_str(), frame);
-  return buf.data();
+std::vector<NamedOutput> ViewFiles::named() const {
+  std::vector<NamedOutput> out;
+  if (!color.empty()) out.push_back({"-o", color});
+  if (depth) out.push_back({"--depth", *depth});
+  if (ids) out.push_back({"--ids", *ids});
+  if (normals) out.push_back({"--normals", *normals});
+  return out;
 }
 
-RenderOutputs planOutputs(const RenderOptions& options, const std::string& sceneName) {
-  RenderOutputs o;
-  o.turntable = options.turntable > 0;
-  o.frames = o.turntable ? options.turntable : 1;
-  o.color =
-      options.output ? *options.output : fs::path(sceneName + (o.turntable ? "-%03d.png" : ".png"));
-  o.video = o.turntable && isVideo(o.color);
-  o.depth = options.depth;
-  o.ids = options.ids;
-  o.contactSheet = options.contactSheet;
-  if (o.turntable && !o.video) checkFramePattern(o.color.string());
-  if (!o.video) checkOutputExtension(o.color, colorExtensions(), "image");
-  if (o.turntable && (o.depth || o.ids))
-    throw InputError("command line: --depth and --ids write one image; not with --turntable");
-  if (!o.turntable && o.contactSheet)
-    throw InputError("command line: --contact-sheet needs --turntable");
-  if (o.contactSheet) checkOutputExtension(*o.contactSheet, {".png"}, "image");
-  if (o.depth) checkOutputExtension(*o.depth, {".tif", ".tiff", ".exr", ".png"}, "depth");
-  if (o.ids) checkOutputExtension(*o.ids, {".png"}, "id image");
+ViewFiles RenderOutputs::filesOf(size_t view) const {
+  NameFields f = fields;
+  f.view = view;
+  ViewFiles files;
+  if (!video) files.color = color.expand(f);
+  if (depth) files.depth = depth->expand(f);
+  if (ids) files.ids = ids->expand(f);
+  if (normals) files.normals = normals->expand(f);
+  return files;
+}
 
+RenderOutputs planOutputs(const RenderOptions& options, const ViewPlan& plan,
+                          const SceneSettings& settings) {
+  RenderOutputs o;
+  const bool multi = plan.multiView;
+  o.fields.scene = settings.name;
+  o.fields.algorithm = options.algorithm;
+  o.fields.shading = shadingModeName(settings.shading);
+  const std::string color =
+      options.output ? options.output->string() : (multi ? "{scene}-{view:03}.png" : "{scene}.png");
+  o.color = NameTemplate(color, "-o", multi);
+  o.video = multi && isVideo(o.color.pattern());
+  if (options.depth) o.depth = NameTemplate(options.depth->string(), "--depth", multi);
+  if (options.ids) o.ids = NameTemplate(options.ids->string(), "--ids", multi);
+  if (options.normals) o.normals = NameTemplate(options.normals->string(), "--normals", multi);
+  o.contactSheet = options.contactSheet;
+  o.cameras = options.cameras;
+
+  if (multi) {
+    if (!o.video) checkViewField(o.color, "-o", "frames/{scene}-{view:03}.png, or a .mp4 file");
+    if (o.depth) checkViewField(*o.depth, "--depth", "depth/{view:03}.exr");
+    if (o.ids) checkViewField(*o.ids, "--ids", "ids/{view:03}.png");
+    if (o.normals) checkViewField(*o.normals, "--normals", "normals/{view:03}.exr");
+  }
+  const bool part = !plan.whole() || options.skipExisting;
+  if (o.video && part)
+    throw InputError(
+        "command line: a video holds every view: not with --frames, --shard or "
+        "--skip-existing");
+  if (!multi && o.contactSheet)
+    throw InputError("command line: --contact-sheet needs several views (--orbit, --turntable)");
+  if (o.contactSheet && part)
+    throw InputError(
+        "command line: --contact-sheet holds every view: not with --frames, "
+        "--shard or --skip-existing");
+  if (options.camerasOnly && !o.cameras)
+    throw InputError("command line: --cameras-only needs --cameras FILE");
+
+  const ViewFiles first = o.filesOf(0);
+  if (!o.video) checkOutputExtension(first.color, colorExtensions(), "image");
+  if (o.contactSheet) checkOutputExtension(*o.contactSheet, {".png"}, "image");
+  if (first.depth) checkOutputExtension(*first.depth, {".tif", ".tiff", ".exr", ".png"}, "depth");
+  if (first.ids) checkOutputExtension(*first.ids, {".png"}, "id image");
+  if (first.normals)
+    checkOutputExtension(*first.normals, {".exr", ".tif", ".tiff", ".png"}, "normals");
+  if (o.cameras) checkOutputExtension(*o.cameras, {".json"}, "camera manifest");
+
+  // Every view's, not only this part's: two parts of a run must not write one file either.
   std::vector<NamedOutput> named;
-  for (int frame = 0; frame < (o.video ? 1 : o.frames); ++frame)
-    named.push_back({"-o", o.colorOf(frame)});
-  if (o.depth) named.push_back({"--depth", *o.depth});
-  if (o.ids) named.push_back({"--ids", *o.ids});
+  if (o.video) named.push_back({"-o", o.color.pattern()});
+  for (size_t view = 0; view < plan.views.size(); ++view) {
+    for (const NamedOutput& n : o.filesOf(view).named()) named.push_back(n);
+  }
   if (o.contactSheet) named.push_back({"--contact-sheet", *o.contactSheet});
+  if (o.cameras) named.push_back({"--cameras", *o.cameras});
   checkDistinctOutputs(named);
   return o;
 }
 
-void checkWritable(const RenderOutputs& o) {
-  for (int frame = 0; frame < (o.video ? 1 : o.frames); ++frame) checkWritable(o.colorOf(frame));
-  for (const auto& path : {o.depth, o.ids, o.contactSheet})
-    if (path) checkWritable(*path);
+void checkWritable(const RenderOutputs& o, const std::vector<size_t>& views) {
+  // One probe per folder (it makes the folder, as the writes will); a folder in a file's place
+  // is refused for every file.
+  std::set<fs::path> probed;
+  const auto check = [&](const fs::path& path) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec))
+      throw InputError(path.string() + ": cannot write file (a folder has that name)");
+    if (probed.insert(fs::absolute(path, ec).parent_path()).second) checkWritable(path);
+  };
+  if (o.video) check(o.color.pattern());
+  for (size_t view : views) {
+    for (const NamedOutput& n : o.filesOf(view).named()) check(n.path);
+  }
+  for (const auto& path : {o.contactSheet, o.cameras})
+    if (path) check(*path);
 }
 
 VideoOutput::VideoOutput(const fs::path& path, int width, int height)

@@ -43,7 +43,7 @@ TEST(CommandLine, RendersTheDefaultOutputName) {
   dir.write("settings.json", settingsFor("sq.obj"));
   const auto r = runZrender({"sq"}, dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(test::beyondSummary(r.err), "");
   const cv::Mat image = cv::imread(dir.file("sq.png"));
   ASSERT_FALSE(image.empty());
   EXPECT_EQ(image.cols, 32);
@@ -297,7 +297,7 @@ TEST(CommandLine, VersionPrintsTheProjectVersionWithoutAScene) {
   const auto r = runZrender({"--version"}, dir.path);
   EXPECT_EQ(r.status, 0);
   EXPECT_EQ(r.out, std::string("zrender ") + ZRENDER_VERSION + "\n");
-  EXPECT_EQ(r.err, "");
+  EXPECT_EQ(test::beyondSummary(r.err), "");
   EXPECT_TRUE(fs::is_empty(dir.path));
 }
 

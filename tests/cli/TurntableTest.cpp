@@ -66,7 +66,7 @@ TEST(Turntable, PatternWithoutADirectiveIsRefused) {
   dir.write("sq.obj", kSquareObj);
   dir.write("settings.json", settingsFor("sq.obj"));
   expectCleanError(runZrender({"sq", "--turntable", "3", "-o", dir.file("x.png")}, dir.path),
-                   {"%d", "x.png"});
+                   {"{view}", "x.png"});
 }
 
 TEST(Turntable, PercentSignsAndAWidthInThePattern) {

@@ -112,7 +112,7 @@ void expectAgreeingPictures(const TempDir& dir, const std::vector<std::string>& 
   for (const std::string& algorithm : algorithmNames()) {
     SCOPED_TRACE(algorithm);
     const Outcome r = renderScene(dir, algorithm, extra);
-    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(test::beyondSummary(r.err), "");
     const cv::Mat image = expectPicture(r, dir.file("out.png"), kImageSize, kImageSize);
     if (image.empty()) continue;
     EXPECT_GE(coveredPixels(image), minCovered);

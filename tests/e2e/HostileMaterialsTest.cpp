@@ -36,7 +36,7 @@ TEST(HostileMaterials, MissingMaterialFileOrTextureIsAWarning) {
   EXPECT_GT(coveredPixels(expectPicture(r, dir.file("out.png"), kImageSize, kImageSize)), 0);
   EXPECT_EQ(r.err.rfind("zrender: warning: ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("missing.png"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;  // and the summary
 }
 
 TEST(HostileMaterials, MissingTextureOfTheSettingsIsAnError) {
@@ -86,7 +86,7 @@ TEST(HostileMaterials, MaterialTextureThatIsNotAnImageIsAWarning) {
     EXPECT_GT(coveredPixels(expectPicture(r, dir.file("out.png"), kImageSize, kImageSize)), 0);
     EXPECT_NE(r.err.find("zrender: warning: "), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("tex.png"), std::string::npos) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 2) << r.err;  // and the summary
     // The same file named by the settings' "texture" key, a value the user chose: an error.
     writeScene(dir, R"("eye": [0, 0, 3], "texture": "tex.png", "shading": "texture")");
     fs::remove(dir.file("out.png"));

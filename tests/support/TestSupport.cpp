@@ -88,6 +88,14 @@ SceneSettings projectScene(const std::string& name) {
   return file.scenes.at(name);
 }
 
+std::string beyondSummary(const std::string& err) {
+  const std::string summary = "zrender: wrote ";
+  const size_t last = err.empty() ? std::string::npos : err.rfind('\n', err.size() - 2);
+  const size_t start = last == std::string::npos ? 0 : last + 1;
+  if (err.compare(start, summary.size(), summary) != 0 || err.back() != '\n') return err;
+  return err.substr(0, start);
+}
+
 std::string readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream ss;

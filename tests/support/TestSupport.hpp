@@ -54,6 +54,10 @@ std::shared_ptr<const Mesh> referenceModel(const std::string& name);
 // The project's settings.json entry for a scene (path resolved), for tests on real scenes.
 SceneSettings projectScene(const std::string& name);
 
+// What a run printed on stderr besides its last line, the summary of what it wrote
+// ("zrender: wrote ..."): its warnings.
+std::string beyondSummary(const std::string& err);
+
 // The bytes of a file ("" when it cannot be read).
 std::string readFile(const std::string& path);
 

@@ -15,13 +15,24 @@ struct RenderOptions {
   std::string scene;                    // a settings key or a model file
   std::vector<std::string> moreModels;  // further model files: one scene of them all
   std::string algorithm = "zbuffer";
-  std::optional<std::filesystem::path> settings, output, depth, ids;
+  std::optional<std::filesystem::path> settings, output, depth, ids, normals;
   int repeat = 1;
   bool json = false;
   bool stats = false;
   int turntable = 0;  // frames; 0 = a single image
-  int threads = 1;    // per frame, or for a turntable's frames at once (docs/design.md, Threads)
+  int threads = 1;    // per frame, or for several views at once (docs/design.md, Threads)
   std::optional<std::filesystem::path> contactSheet;
+  // Views (docs/design.md, Views): relative to the scene's camera, degrees and a magnification.
+  std::optional<double> azimuth, elevation, zoom;
+  int orbit = 0;                                 // views around the up axis per ring; 0 = no orbit
+  std::vector<double> orbitElevations;           // one ring per elevation, degrees
+  std::optional<std::string> frames;             // "A:B": views [A, B)
+  std::optional<std::string> shard;              // "I/N": the I-th of N parts, from 0
+  bool skipExisting = false;                     // leave out views whose files all exist
+  std::optional<std::filesystem::path> cameras;  // the camera manifest (transforms.json)
+  bool camerasOnly = false;                      // write the manifest, render nothing
+  bool quiet = false;                            // no summary line, no warnings
+  std::string progress = "auto";                 // auto, bar, lines or none
   SceneOverrides overrides;
 };
 
