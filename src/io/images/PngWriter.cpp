@@ -61,11 +61,9 @@ void filterRow(const cv::Mat& image, int y, BgrToRgb toRgb, unsigned char* out) 
   }
 }
 
-// What a thread keeps from strip to strip: the strip's rows filtered, and igzip's level-1
-// buffer (its hash table and tokens).
+// What a thread keeps from strip to strip: the strip's rows filtered.
 struct Scratch {
   Bytes filtered;
-  Bytes level;
 };
 
 // One strip's part of the zlib stream: its rows deflated, and their Adler-32.
@@ -76,7 +74,7 @@ struct Strip {
   bool ok = false;
 };
 
-// Rows [first, end) filtered and deflated by igzip at level 1 as raw deflate (no header),
+// Rows [first, end) filtered and deflated by igzip at level 0 as raw deflate (no header),
 // ending on a byte boundary (a sync flush), or, for the last strip, with the stream's last
 // block.
 Strip deflateStrip(const cv::Mat& image, int first, int end, bool last, Scratch& scratch) {
@@ -90,12 +88,11 @@ Strip deflateStrip(const cv::Mat& image, int first, int end, bool last, Scratch&
     filterRow(image, y, toRgb, scratch.filtered.data() + rowBytes * size_t(y - first));
   strip.adler = isal_adler32(1, scratch.filtered.data(), n);
 
-  scratch.level.resize(ISAL_DEF_LVL1_DEFAULT);
+  // Level 0, not 1 or 2: those gave another (equivalent) match now and then on a loaded
+  // machine, the same pixels in other bytes (docs/design.md, Image files).
   isal_zstream z;
   isal_deflate_init(&z);
-  z.level = 1;
-  z.level_buf = scratch.level.data();
-  z.level_buf_size = uint32_t(scratch.level.size());
+  z.level = 0;
   z.flush = SYNC_FLUSH;
   z.end_of_stream = last ? 1 : 0;
   z.next_in = scratch.filtered.data();

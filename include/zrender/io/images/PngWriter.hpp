@@ -1,7 +1,7 @@
 #pragma once
 
 // PNG files encoded on several threads (docs/design.md, Image files). The rows are cut into
-// strips, each deflated on its own (ISA-L's igzip at level 1, raw deflate, filter None on every
+// strips, each deflated on its own (ISA-L's igzip at level 0, raw deflate, filter None on every
 // row) and ended with a sync flush, so that the strips laid end to end are one deflate stream;
 // their Adler-32 sums are combined into the zlib stream's (zlib). The file is written here,
 // without libpng: signature, IHDR, the zlib stream in IDAT chunks, IEND.
