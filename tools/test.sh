@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
 # Sets up (tools/setup.sh) and runs the whole test suite with ctest. Safe to run again.
-# assimp-testmodels: the model files assimp's own tests use, read by ModelFormats.AssimpTestModels.
+# assimp-testmodels: the model files assimp's own tests use, read by ModelFormats.AssimpTestModels;
+# parallel: GNU parallel, which runs the recipe of docs/cluster.md in Cluster.GnuParallel*.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/setup.sh"
-if ! dpkg-query -W -f='${Status}' assimp-testmodels 2>/dev/null | grep -q "install ok installed"; then
+missing=()
+for p in assimp-testmodels parallel; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
   sudo=""
   [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  echo "test: installing assimp-testmodels"
+  echo "test: installing ${missing[*]}"
   $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq assimp-testmodels >/dev/null
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 cd "$root/build"
 ctest --output-on-failure -j 2
