@@ -36,12 +36,13 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/zrender-fuzz-run.XXXXXX")
 cleanup() { [[ ${ZRENDER_FUZZ_KEEP:-0} == 1 ]] && echo "corpus kept in $work" || rm -rf "$work"; }
 trap cleanup EXIT
 
-status=0
-for t in "${targets[@]}"; do
-  corpus=$work/$t
+# One target's run; its one-line report (and the log's tail on a failure) goes to $work/$t.report.
+fuzz_one() {
+  local t=$1
+  local corpus=$work/$t
   mkdir -p "$corpus"
   cp "$root"/fuzz/corpus/"$t"/* "$corpus"/
-  dict=()
+  local dict=()
   case $t in
     obj)
       dict=(-dict="$root/fuzz/obj.dict")
@@ -51,7 +52,7 @@ for t in "${targets[@]}"; do
     settings) dict=(-dict="$root/fuzz/settings.dict") ;;
     render) dict=(-dict="$root/fuzz/obj.dict") ;;
   esac
-  log=$work/$t.log
+  local log=$work/$t.log rc
   set +e
   # -timeout: an input taking over 10 s counts as a hang; -rss_limit_mb: as a memory blow-up.
   # TMPDIR: the targets' scratch files (an .mtl beside the model) stay in the work folder.
@@ -59,16 +60,32 @@ for t in "${targets[@]}"; do
     -max_len=8192 -print_final_stats=1 -artifact_prefix="$artifacts/$t-" "$corpus" >"$log" 2>&1
   rc=$?
   set -e
+  local execs speed size
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   speed=$(sed -n 's/^stat::average_exec_per_sec: *//p' "$log" | tail -1)
   size=$(find "$corpus" -type f | wc -l)
   if [[ $rc -eq 0 ]]; then
-    echo "fuzz_$t: ${execs:-?} executions in ${seconds}s (${speed:-?}/s), corpus $size files, no crash"
+    echo "fuzz_$t: ${execs:-?} executions in ${seconds}s (${speed:-?}/s), corpus $size files, no crash" >"$work/$t.report"
   else
-    status=1
-    echo "fuzz_$t: FAILED (exit $rc) after ${execs:-?} executions; log tail:"
-    grep -E 'contract broken|ERROR: |SUMMARY|runtime error|Test unit written' "$log" | head -20
-    tail -5 "$log"
+    {
+      echo "fuzz_$t: FAILED (exit $rc) after ${execs:-?} executions; log tail:"
+      grep -E 'contract broken|ERROR: |SUMMARY|runtime error|Test unit written' "$log" | head -20
+      tail -5 "$log"
+    } >"$work/$t.report"
   fi
+}
+
+# The targets run side by side, as many at once as the machine has processors
+# (ZRENDER_FUZZ_JOBS), each single-threaded for its SECONDS; reports in the targets' order.
+parallel_jobs=${ZRENDER_FUZZ_JOBS:-$(nproc)}
+for t in "${targets[@]}"; do
+  while (($(jobs -rp | wc -l) >= parallel_jobs)); do wait -n || true; done
+  fuzz_one "$t" &
+done
+wait
+status=0
+for t in "${targets[@]}"; do
+  cat "$work/$t.report"
+  grep -q "^fuzz_$t: FAILED" "$work/$t.report" && status=1
 done
 exit $status

@@ -264,8 +264,6 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   printWarnings(warnings, err);
   const ViewPlan plan = planViews(options, settings);
   const RenderOutputs outputs = planOutputs(options, plan, settings);
-  if (outputs.cameras && outputs.video)
-    throw InputError("command line: --cameras names each view's image: not with a video");
 
   const double loadStart = nowMs();
   const Scene scene = loadScene(settings, warnings, &threads);

@@ -81,6 +81,8 @@ RenderOutputs planOutputs(const RenderOptions& options, const ViewPlan& plan,
     throw InputError(
         "command line: --contact-sheet holds every view: not with --frames, "
         "--shard or --skip-existing");
+  if (o.cameras && o.video)
+    throw InputError("command line: --cameras names each view's image: not with a video");
   if (options.camerasOnly && !o.cameras)
     throw InputError("command line: --cameras-only needs --cameras FILE");
 

@@ -378,6 +378,7 @@ TEST(ViewsRun, OptionsThatCannotGoTogetherAreCleanErrors) {
        {"--contact-sheet", "--frames"}},
       {{"--orbit", "4", "-o", "{view}.png", "--normals", "n.exr"}, {"--normals", "{view}"}},
       {{"--cameras-only"}, {"--cameras-only needs --cameras"}},
+      {{"--orbit", "4", "-o", "t.mp4", "--cameras", "c.json"}, {"--cameras", "video"}},
       {{"--orbit", "4", "--turntable", "4"}, {"--turntable", "--orbit"}},
       {{"--progress", "fancy"}, {"--progress", "fancy"}},
       {{"--orbit", "2", "-o", "{view}.png", "--cameras", "c.txt"}, {"c.txt", "camera manifest"}},

@@ -71,15 +71,17 @@ TEST(ThreadCounts, TexturedWithMsaaAndBackFaces) {
 }
 
 TEST(ThreadCounts, EveryShadingModeWithAndWithoutMsaa) {
+  SceneSettings base = test::projectScene("bunny");
+  if (!std::filesystem::exists(base.modelPath)) GTEST_SKIP() << "bunny is not linked";
+  base.width = base.height = 120;
+  Warnings warnings;
+  const Scene loaded = loadScene(base, warnings);  // the mesh read once, for every mode
   for (const std::string& mode : shadingModeNames()) {
     for (int msaa : {1, 4}) {
-      SceneSettings s = test::projectScene("bunny");
-      if (!std::filesystem::exists(s.modelPath)) GTEST_SKIP() << "bunny is not linked";
-      s.width = s.height = 120;
+      SceneSettings s = base;
       s.shading = *parseShadingMode(mode);
       s.msaa = msaa;
-      Warnings warnings;
-      const Scene scene = loadScene(s, warnings);
+      const Scene scene = makeScene(s, loaded.mesh);
       for (const std::string algorithm : {"zbuffer", "interval", "octree"}) {
         const test::Rendered one = renderWith(scene, algorithm, 1);
         test::expectSameFrame(one, renderWith(scene, algorithm, 3),
@@ -90,10 +92,10 @@ TEST(ThreadCounts, EveryShadingModeWithAndWithoutMsaa) {
 }
 
 TEST(ThreadCounts, SmallCrowd) {
-  // Under ThreadSanitizer (tools/tsan.sh) a 4 x 1 x 4 crowd: the same threaded paths (instances
-  // in chunks, bands, the octree's leaves) at a sixth of the 10 x 1 x 10 crowd's cost, which the
-  // plain and ASan suites run.
-#if defined(__SANITIZE_THREAD__)
+  // Under the sanitizers (tools/tsan.sh, tools/sanitize.sh) a 4 x 1 x 4 crowd: the same threaded
+  // paths (instances in chunks, bands, the octree's leaves) at a sixth of the 10 x 1 x 10 crowd's
+  // cost, which the plain suite runs.
+#if defined(__SANITIZE_THREAD__) || defined(__SANITIZE_ADDRESS__)
   const auto crowd = projectScene("crowd", 150, [](SceneSettings& s) {
     s.grid->count = {4, 1, 4};
   });
