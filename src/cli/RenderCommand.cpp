@@ -111,9 +111,10 @@ Json::Value frameJson(const Scene& scene, const Renderer& renderer, const FrameR
   return j;
 }
 
-// A view's own files: its color image (unless the views make a video), depth, ids, normals.
-void writeViewFiles(const ViewFiles& files, const Scene& scene, const Camera& camera,
-                    const Renderer& renderer) {
+// A view's own files: its color image (unless the views make a video), depth, ids, normals
+// (by `normals`, given when the view has them).
+void writeViewFiles(const ViewFiles& files, const Camera& camera, const Renderer& renderer,
+                    NormalImage* normals) {
   const Threads* threads = &renderer.threadPool();
   if (!files.color.empty()) writeImageAtomically(files.color, renderer.color(), threads);
   if (files.depth) {
@@ -124,10 +125,10 @@ void writeViewFiles(const ViewFiles& files, const Scene& scene, const Camera& ca
   if (files.ids)
     writeImageAtomically(*files.ids, idImage(renderer.buffer(), renderer.sampleScale()), threads);
   if (files.normals) {
-    const cv::Mat normals = normalImage(scene, renderer.buffer(), camera, renderer.sampleScale());
-    writeImageAtomically(
-        *files.normals, lowerExtension(*files.normals) == ".png" ? normalImage16(normals) : normals,
-        threads);
+    const cv::Mat image = normals->render(renderer.buffer(), camera, renderer.sampleScale());
+    writeImageAtomically(*files.normals,
+                         lowerExtension(*files.normals) == ".png" ? normalImage16(image) : image,
+                         threads);
   }
 }
 
@@ -173,6 +174,7 @@ struct FrameSlots {
     rendererThreads_ = atOnce ? 1 : threads.count();
     renderers.resize(atOnce ? size_t(threads.count()) : 1);
     reports.resize(renderers.size());
+    normalImages.resize(renderers.size());
   }
   // Before the first frame. One renderer on several threads: its buffers' pages are faulted
   // in beside its prepare, which runs on one thread, in parts that the threads share once it
@@ -196,8 +198,14 @@ struct FrameSlots {
       renderers[slot] = std::make_unique<Renderer>(scene_, algorithm_, rendererThreads_);
     return *renderers[slot];
   }
+  // The normal images of the slot's frames, made by its first frame that writes one.
+  NormalImage& normalImage(size_t slot) {
+    if (!normalImages[slot]) normalImages[slot] = std::make_unique<NormalImage>(scene_);
+    return *normalImages[slot];
+  }
 
   std::vector<std::unique_ptr<Renderer>> renderers;
+  std::vector<std::unique_ptr<NormalImage>> normalImages;
   std::vector<FrameReport> reports;
 
  private:
@@ -311,7 +319,8 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     FrameReport& report = slots.reports[slot];
     report = renderRepeated(renderer, camera, options.repeat);
     const double writeStart = nowMs();
-    writeViewFiles(outputs.filesOf(views[i]), scene, camera, renderer);
+    const ViewFiles files = outputs.filesOf(views[i]);
+    writeViewFiles(files, camera, renderer, files.normals ? &slots.normalImage(slot) : nullptr);
     if (outputs.contactSheet) sheet[i] = renderer.color().clone();
     report.writeMs = nowMs() - writeStart;
   };

@@ -1,52 +1,48 @@
 #include "zrender/shading/NormalImage.hpp"
 
 #include <cmath>
-#include <optional>
 #include <vector>
 
 #include "SurfaceSample.hpp"
 #include "zrender/shading/ShadingModel.hpp"
-#include "zrender/shading/SurfaceSetup.hpp"
 
 namespace zrender {
 
-cv::Mat normalImage(const Scene& scene, const FrameBuffer& fb, const Camera& camera, int scale) {
-  std::vector<Mat4> modelView;
-  for (uint32_t k = 0; k < scene.instanceCount(); ++k)
-    modelView.push_back(camera.view * scene.modelMatrix(k));
+NormalImage::NormalImage(const Scene& scene) : scene_(scene) {
   // As the Shader chooses: the surface kernel's interpolated normal where the model has
   // vertex normals, else the face's own.
-  std::optional<SurfaceSetup> surface;
-  if (scene.mesh->hasNormals()) {
-    surface.emplace(scene, ShadingMode::Normal);
-    surface->begin(modelView, camera, fb.width(), fb.height());
+  const Mesh& mesh = *scene.mesh;
+  if (mesh.hasNormals()) {
+    surface_.emplace(scene, ShadingMode::Normal);
+    return;
   }
+  faceNormals_.resize(mesh.faceCount());
+  for (size_t f = 0; f < mesh.faceCount(); ++f) faceNormals_[f] = newellNormal(mesh, f);
+}
+
+cv::Mat NormalImage::render(const FrameBuffer& fb, const Camera& camera, int scale) {
+  std::vector<Mat4> modelView;
+  for (uint32_t k = 0; k < scene_.instanceCount(); ++k)
+    modelView.push_back(camera.view * scene_.modelMatrix(k));
+  if (surface_) surface_->begin(modelView, camera, fb.width(), fb.height());
   const int width = fb.width() / scale, height = fb.height() / scale;
   cv::Mat out(height, width, CV_32FC3, cv::Scalar::all(0.0));
   for (int y = 0; y < height; ++y) {
     float* row = out.ptr<float>(y);
     for (int x = 0; x < width; ++x) {
-      // The pixel's nearest sample, the smallest key, first in row order among equals.
-      int sx = x * scale, sy = y * scale;
-      DepthKey key = fb.row(sy)[sx];
-      for (int j = 0; j < scale; ++j) {
-        for (int i = 0; i < scale; ++i) {
-          const DepthKey k = fb.row(y * scale + j)[x * scale + i];
-          if (k < key) key = k, sx = x * scale + i, sy = y * scale + j;
-        }
-      }
-      const uint32_t id = keyFaceId(key);
+      const PixelSample sample = nearestSample(fb, scale, x, y);
+      const uint32_t id = keyFaceId(sample.key);
       if (id == kBackgroundId) continue;
       Vec3 n;
-      if (surface) {
-        const FaceSurface& face = surface->surface(id);
+      if (surface_) {
+        const FaceSurface& face = surface_->surface(id);
         float m[3], uv[2];
         const float length =
-            std::sqrt(surface::surfaceAt(face, surface->fans(face), sx, sy, m, uv));
+            std::sqrt(surface::surfaceAt(face, surface_->fans(face), sample.x, sample.y, m, uv));
         n = Vec3(m[0] / length, m[1] / length, m[2] / length);
       } else {
-        const FaceRef ref = scene.locate(id);
-        n = transformDirection(modelView[ref.instance], newellNormal(*scene.mesh, ref.meshFace));
+        const FaceRef ref = scene_.locate(id);
+        n = transformDirection(modelView[ref.instance], faceNormals_[ref.meshFace]);
         const double length = cv::norm(n);
         n = length > 0.0 ? n / length : Vec3(0, 0, 1);
       }

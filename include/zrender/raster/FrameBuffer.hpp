@@ -60,4 +60,21 @@ class FrameBuffer {
   std::vector<DepthKey, HugePageAllocator<DepthKey>> keys_;
 };
 
+// The sample a pixel's images show (depth, ids, normals): with MSAA (`scale` 2) its nearest,
+// the smallest key, the first in row order among equal ones.
+struct PixelSample {
+  DepthKey key;
+  int x, y;  // samples
+};
+inline PixelSample nearestSample(const FrameBuffer& fb, int scale, int x, int y) {
+  PixelSample best{fb.row(y * scale)[x * scale], x * scale, y * scale};
+  for (int j = 0; j < scale; ++j) {
+    const DepthKey* row = fb.row(y * scale + j);
+    for (int i = 0; i < scale; ++i) {
+      if (row[x * scale + i] < best.key) best = {row[x * scale + i], x * scale + i, y * scale + j};
+    }
+  }
+  return best;
+}
+
 }  // namespace zrender

@@ -1,6 +1,5 @@
 #include "zrender/io/images/ImageOutput.hpp"
 
-#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -15,18 +14,6 @@
 #include "zrender/io/images/PngWriter.hpp"
 
 namespace zrender {
-
-namespace {
-
-// The nearest of a pixel's samples (its smallest key).
-DepthKey pixelKey(const FrameBuffer& fb, int scale, int x, int y) {
-  if (scale == 1) return fb.row(y)[x];
-  const DepthKey* r0 = fb.row(2 * y);
-  const DepthKey* r1 = fb.row(2 * y + 1);
-  return std::min({r0[2 * x], r0[2 * x + 1], r1[2 * x], r1[2 * x + 1]});
-}
-
-}  // namespace
 
 std::initializer_list<const char*> colorExtensions() {
   static const std::initializer_list<const char*> list = {".png", ".jpg", ".jpeg", ".bmp",
@@ -70,7 +57,7 @@ cv::Mat depthImage(const FrameBuffer& fb, int scale, bool sixteenBit) {
   cv::Mat out(height, width, sixteenBit ? CV_16UC1 : CV_32FC1);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
-      const float d = keyDepth(pixelKey(fb, scale, x, y));
+      const float d = keyDepth(nearestSample(fb, scale, x, y).key);
       if (sixteenBit)
         out.ptr<uint16_t>(y)[x] = uint16_t(std::lround(double(d) * 65535.0));
       else
@@ -86,10 +73,11 @@ cv::Mat idImage(const FrameBuffer& fb, int scale) {
   for (int y = 0; y < height; ++y) {
     uint8_t* p = out.ptr(y);
     for (int x = 0; x < width; ++x) {
-      const uint32_t v = keyFaceId(pixelKey(fb, scale, x, y)) + 1;  // background wraps to 0
-      p[3 * x + 2] = uint8_t(v);                                    // R: low byte
-      p[3 * x + 1] = uint8_t(v >> 8);                               // G: middle byte
-      p[3 * x + 0] = uint8_t(v >> 16);                              // B: high byte
+      const uint32_t v =
+          keyFaceId(nearestSample(fb, scale, x, y).key) + 1;  // background wraps to 0
+      p[3 * x + 2] = uint8_t(v);                              // R: low byte
+      p[3 * x + 1] = uint8_t(v >> 8);                         // G: middle byte
+      p[3 * x + 0] = uint8_t(v >> 16);                        // B: high byte
     }
   }
   return out;
