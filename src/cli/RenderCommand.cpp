@@ -15,6 +15,7 @@
 #include "zrender/base/Threads.hpp"
 #include "zrender/cli/CameraManifest.hpp"
 #include "zrender/cli/Progress.hpp"
+#include "zrender/cli/ReferenceCheck.hpp"
 #include "zrender/cli/RenderOutputs.hpp"
 #include "zrender/cli/Report.hpp"
 #include "zrender/cli/ViewPlan.hpp"
@@ -112,18 +113,24 @@ Json::Value frameJson(const Scene& scene, const Renderer& renderer, const FrameR
 }
 
 // A view's own files: its color image (unless the views make a video), depth, ids, normals
-// (by `normals`, given when the view has them).
+// (by `normals`, given when the view has them). The images written are kept in `kept` when
+// given, for the references to be compared with.
 void writeViewFiles(const ViewFiles& files, const Camera& camera, const Renderer& renderer,
-                    NormalImage* normals) {
+                    NormalImage* normals, RenderedImages* kept) {
   const Threads* threads = &renderer.threadPool();
   if (!files.color.empty()) writeImageAtomically(files.color, renderer.color(), threads);
+  RenderedImages images;
+  images.color = renderer.color();
   if (files.depth) {
     const bool sixteenBit = lowerExtension(*files.depth) == ".png";
-    writeImageAtomically(
-        *files.depth, depthImage(renderer.buffer(), renderer.sampleScale(), sixteenBit), threads);
+    images.depth = depthImage(renderer.buffer(), renderer.sampleScale(), sixteenBit);
+    writeImageAtomically(*files.depth, images.depth, threads);
   }
-  if (files.ids)
-    writeImageAtomically(*files.ids, idImage(renderer.buffer(), renderer.sampleScale()), threads);
+  if (files.ids) {
+    images.ids = idImage(renderer.buffer(), renderer.sampleScale());
+    writeImageAtomically(*files.ids, images.ids, threads);
+  }
+  if (kept) *kept = std::move(images);
   if (files.normals) {
     const cv::Mat image = normals->render(renderer.buffer(), camera, renderer.sampleScale());
     writeImageAtomically(*files.normals,
@@ -272,6 +279,9 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
   printWarnings(warnings, err);
   const ViewPlan plan = planViews(options, settings);
   const RenderOutputs outputs = planOutputs(options, plan, settings);
+  // Before the loading: a missing reference is found at once, and nothing is written.
+  const std::vector<ReferenceImage> references = readReferences(options, plan, outputs);
+  const long long tolerance = options.referenceTolerance.value_or(0);
 
   const double loadStart = nowMs();
   const Scene scene = loadScene(settings, warnings, &threads);
@@ -298,6 +308,7 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     }
   }
   checkWritable(outputs, views);
+  checkDiffsWritable(references);
 
   const bool multi = plan.multiView;
   FrameSlots slots(scene, options.algorithm, threads, int(views.size()));
@@ -311,6 +322,9 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
                         ? ProgressMode::None
                         : progressMode(options.progress, isatty(STDERR_FILENO), views.size()),
                     views.size(), kProgressIntervalMs, nowMs);
+  // The references' comparisons, of the run's one view.
+  RenderedImages kept;
+  std::vector<ReferenceResult> referenceResults;
 
   // Renders a view and writes its own files: on any thread, several views at once.
   const auto render = [&](size_t i, size_t slot) {
@@ -320,9 +334,12 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     report = renderRepeated(renderer, camera, options.repeat);
     const double writeStart = nowMs();
     const ViewFiles files = outputs.filesOf(views[i]);
-    writeViewFiles(files, camera, renderer, files.normals ? &slots.normalImage(slot) : nullptr);
+    writeViewFiles(files, camera, renderer, files.normals ? &slots.normalImage(slot) : nullptr,
+                   references.empty() ? nullptr : &kept);
     if (outputs.contactSheet) sheet[i] = renderer.color().clone();
     report.writeMs = nowMs() - writeStart;
+    if (!references.empty())
+      referenceResults = compareReferences(references, kept, tolerance, &renderer.threadPool());
   };
   // What must come in view order: the video, the JSON lines, the statistics, the progress.
   const auto finish = [&](size_t i, size_t slot) {
@@ -335,10 +352,11 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     }
     frameMs[i] = report.frameMs;
     if (options.json) {
-      out << toJsonLine(frameJson(scene, renderer, report, options, threads.count(),
-                                  multi ? &views[i] : nullptr, outputs.filesOf(views[i]), loadMs,
-                                  start))
-          << "\n";
+      Json::Value j =
+          frameJson(scene, renderer, report, options, threads.count(), multi ? &views[i] : nullptr,
+                    outputs.filesOf(views[i]), loadMs, start);
+      if (!references.empty()) j["reference"] = referenceJson(referenceResults, tolerance);
+      out << toJsonLine(j) << "\n";
     }
     if (options.stats) printStats(renderer.stats(), report.medians, options.json ? err : out);
     progress.viewDone();
@@ -355,10 +373,16 @@ int runRender(const RenderOptions& options, std::ostream& out, std::ostream& err
     writeFileAtomically(*outputs.cameras, manifestText(cameraManifest(
                                               cameras, outputs, *outputs.cameras, settings.msaa)));
   }
+  // A reference's line before the summary, which stays the last; -q keeps those that fail.
+  bool referencesPassed = true;
+  for (const ReferenceResult& result : referenceResults) {
+    referencesPassed = referencesPassed && result.passed;
+    if (!options.quiet || !result.passed) err << referenceLine(result);
+  }
   if (!options.quiet)
     err << summaryLine(outputs, plan, views, skipped, frameMs, settings, nowMs() - renderStart)
         << "\n";
-  return 0;
+  return referencesPassed ? kExitSuccess : kExitCheckFailed;
 }
 
 }  // namespace zrender

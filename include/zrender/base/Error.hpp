@@ -16,6 +16,15 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// zrender's exit statuses (the README and docs/design.md, Exit statuses, list them).
+enum ExitStatus : int {
+  kExitSuccess = 0,
+  kExitInternalError = 1,  // a bug or the machine (out of memory): not the user's input
+  kExitBadInput = 2,       // InputError
+  kExitCheckFailed = 3,    // a slowdown beyond --max-slowdown, or an image unlike --reference's
+  kExitDisagree = 4,       // an algorithm's buffers differ from the z-buffer's
+};
+
 // The most bytes of one message line that zrender prints (an error or a warning, after its
 // "zrender: error: " prefix): a message can carry a path or a list of any length.
 inline constexpr size_t kMaxMessageBytes = 1000;

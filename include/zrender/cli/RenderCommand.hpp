@@ -33,6 +33,10 @@ struct RenderOptions {
   bool camerasOnly = false;                      // write the manifest, render nothing
   bool quiet = false;                            // no summary line, no warnings
   std::string progress = "auto";                 // auto, bar, lines or none
+  // Reference images (docs/design.md, Reference images), compared with the image -o, --depth
+  // or --ids writes; the pixels that may differ before the run fails (exit 3).
+  std::optional<std::filesystem::path> reference, referenceDepth, referenceIds;
+  std::optional<long long> referenceTolerance;  // pixels; default 0
   SceneOverrides overrides;
 };
 

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <csetjmp>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -93,31 +95,100 @@ bool encodeImage(const std::string& extension, const cv::Mat& image,
 
 namespace {
 
-cv::Mat decodeOrThrow(const fs::path& path, std::string& error) {
-  // PNG files are recognised by their signature, whatever their name.
+// Whether `path` is a regular file that opens, so that a decoder may read it; sets `error`
+// otherwise. Whether it starts with PNG's signature, in `isPng`.
+bool openableImage(const fs::path& path, bool& isPng, std::string& error) {
   unsigned char signature[8] = {};
   std::error_code ec;
   if (fs::is_directory(path, ec)) {
     error = "cannot be opened (it is a folder)";
-    return {};
+    return false;
   }
   FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) {  // said here: OpenCV would print a warning of its own on stderr
     error = std::string("cannot be opened: ") + std::strerror(errno);
-    return {};
+    return false;
   }
   struct stat status {};
   if (::fstat(fileno(f), &status) != 0 || !S_ISREG(status.st_mode)) {
     std::fclose(f);
     error = "cannot be read (not a regular file)";  // a device or a pipe never ends
-    return {};
+    return false;
   }
   const size_t n = std::fread(signature, 1, sizeof signature, f);
   std::fclose(f);
-  if (n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0)
+  isPng = n == sizeof signature && png_sig_cmp(signature, 0, sizeof signature) == 0;
+  return true;
+}
+
+cv::Mat decodeOrThrow(const fs::path& path, std::string& error) {
+  // PNG files are recognised by their signature, whatever their name.
+  bool isPng = false;
+  if (!openableImage(path, isPng, error)) return {};
+  if (isPng)
     return readPng(
         [&](png_image& png) { return png_image_begin_read_from_file(&png, path.c_str()); }, error);
   return codecPlugin().read(path.string(), error);
+}
+
+// Reads `path` when it is a 16-bit gray PNG without transparency (the depth image zrender writes)
+// as it is kept, by libpng's full API, which changes no value (the simplified API would apply a
+// gAMA chunk): true, with `image` or `error`. False for any other PNG, which OpenCV reads, so
+// that a PNG depth image needs no codec plugin.
+bool readGray16Png(const fs::path& path, cv::Mat& image, std::string& error) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return false;
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  // Everything with a destructor is made before setjmp: libpng's errors longjmp back here.
+  std::vector<png_bytep> rows;
+  volatile bool handled = false;
+  if (!png || !info || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    std::fclose(f);
+    if (handled) {
+      image = cv::Mat();
+      error = "cannot be read as an image (a broken 16-bit PNG)";
+    }
+    return handled;
+  }
+  png_init_io(png, f);
+  png_read_info(png, info);
+  const png_uint_32 width = png_get_image_width(png, info);
+  const png_uint_32 height = png_get_image_height(png, info);
+  if (png_get_bit_depth(png, info) == 16 && png_get_color_type(png, info) == PNG_COLOR_TYPE_GRAY &&
+      !png_get_valid(png, info, PNG_INFO_tRNS)) {
+    handled = true;
+    if (uint64_t(width) * height > kMaxImagePixels) {
+      error = "is too large (" + std::to_string(width) + " x " + std::to_string(height) +
+              " pixels, over " + std::to_string(kMaxImagePixels) + ")";
+    } else {
+      image.create(int(height), int(width), CV_16UC1);
+      rows.resize(height);
+      for (png_uint_32 y = 0; y < height; ++y) rows[y] = image.ptr(int(y));
+      if (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) png_set_swap(png);  // PNG is big-endian
+      png_set_interlace_handling(png);
+      png_read_update_info(png, info);
+      png_read_image(png, rows.data());
+      png_read_end(png, nullptr);
+    }
+  }
+  png_destroy_read_struct(&png, &info, nullptr);
+  std::fclose(f);
+  return handled;
+}
+
+// Turns the exceptions of `decode` into `error`, as the decoders' own failures.
+template <typename Decode>
+cv::Mat decodeCaught(const Decode& decode, std::string& error) {
+  try {
+    return decode();
+  } catch (const std::bad_alloc&) {
+    error = "cannot be read: out of memory";
+  } catch (const std::exception& e) {  // the codec plugin cannot be loaded
+    error = std::string("cannot be read: ") + e.what();
+  }
+  return {};
 }
 
 }  // namespace
@@ -141,14 +212,19 @@ cv::Mat decodeColorImage(const std::vector<unsigned char>& bytes, std::string& e
 }
 
 cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
-  try {
-    return decodeOrThrow(path, error);
-  } catch (const std::bad_alloc&) {
-    error = "cannot be read: out of memory";
-  } catch (const std::exception& e) {  // the codec plugin cannot be loaded
-    error = std::string("cannot be read: ") + e.what();
-  }
-  return {};
+  return decodeCaught([&] { return decodeOrThrow(path, error); }, error);
+}
+
+cv::Mat decodeImageUnchanged(const fs::path& path, std::string& error) {
+  return decodeCaught(
+      [&] {
+        bool isPng = false;
+        if (!openableImage(path, isPng, error)) return cv::Mat();
+        cv::Mat image;
+        if (isPng && readGray16Png(path, image, error)) return image;
+        return codecPlugin().readUnchanged(path.string(), error);
+      },
+      error);
 }
 
 VideoFile::VideoFile(const fs::path& path, int width, int height, double fps) {

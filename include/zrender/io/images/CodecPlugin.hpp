@@ -27,6 +27,9 @@ class CodecPlugin {
   // The image file at `path` as 8-bit BGR; empty with the reason in `error` (what follows the
   // file's name: "is too large (...)", "cannot be read as an image").
   virtual cv::Mat read(const std::string& path, std::string& error) = 0;
+  // The image file at `path` as the file keeps it (cv::IMREAD_UNCHANGED: a 16-bit PNG as
+  // 16-bit, a float TIFF or OpenEXR as float, its channels as they are); errors as read().
+  virtual cv::Mat readUnchanged(const std::string& path, std::string& error) = 0;
   // The same for an image file's bytes already in memory (a texture embedded in a model).
   virtual cv::Mat decode(const std::vector<unsigned char>& bytes, std::string& error) = 0;
   // A video writer (fourcc as cv::VideoWriter's) at `path`; null when none takes the format.

@@ -40,6 +40,11 @@ void limitImageReads();
 cv::Mat decodeColorImage(const std::filesystem::path& path, std::string& error);
 // The same for an image file's bytes in memory (a texture embedded in a model file).
 cv::Mat decodeColorImage(const std::vector<unsigned char>& bytes, std::string& error);
+// Decodes an image file as the file keeps it: a 16-bit PNG as 16-bit, a float TIFF or OpenEXR
+// as 32-bit float, gray as one channel (a depth image to compare, docs/design.md, Reference
+// images). A 16-bit gray PNG is read by libpng, the rest by the codec plugin. Errors as
+// decodeColorImage's.
+cv::Mat decodeImageUnchanged(const std::filesystem::path& path, std::string& error);
 
 // A video file being written (.mp4: MPEG-4 part 2, .avi: Motion JPEG), 8-bit BGR frames.
 class VideoSink;

@@ -62,6 +62,10 @@ class OpenCvCodecs : public CodecPlugin {
     return decodeWith([&] { return cv::imread(path, cv::IMREAD_COLOR); }, error);
   }
 
+  cv::Mat readUnchanged(const std::string& path, std::string& error) override {
+    return decodeWith([&] { return cv::imread(path, cv::IMREAD_UNCHANGED); }, error);
+  }
+
   cv::Mat decode(const std::vector<unsigned char>& bytes, std::string& error) override {
     return decodeWith([&] { return cv::imdecode(bytes, cv::IMREAD_COLOR); }, error);
   }
