@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Sets up (tools/setup.sh) and runs the whole test suite with ctest. Safe to run again.
 # assimp-testmodels: the model files assimp's own tests use, read by ModelFormats.AssimpTestModels;
-# parallel: GNU parallel, which runs the recipe of docs/cluster.md in Cluster.GnuParallel*.
+# parallel: GNU parallel, which runs the recipe of docs/cluster.md in Cluster.GnuParallel*;
+# python3-jsonschema: the validator of the bench's results file against its schema (BenchResults.*);
+# python3-yaml: reads the CI recipes of docs/ci.md (Recipes.CiWorkflowsRunInOrder).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/setup.sh"
 missing=()
-for p in assimp-testmodels parallel; do
+for p in assimp-testmodels parallel python3-jsonschema python3-yaml; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if ((${#missing[@]})); then

@@ -4,121 +4,29 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <ctime>
-#include <fstream>
 #include <memory>
 #include <sstream>
 
 #include "zrender/base/Error.hpp"
-#include "zrender/cli/BenchCommand.hpp"
 #include "zrender/cli/Report.hpp"
+#include "zrender/cli/bench/BenchChart.hpp"
+#include "zrender/cli/bench/BenchComparison.hpp"
+#include "zrender/cli/bench/BenchFormats.hpp"
+#include "zrender/cli/bench/BenchResults.hpp"
+#include "zrender/cli/bench/MachineProbe.hpp"
 #include "zrender/io/SceneFiles.hpp"
 #include "zrender/io/files/OutputFile.hpp"
-#include "zrender/io/images/Drawing.hpp"
+#include "zrender/io/images/ImageCodecs.hpp"
 #include "zrender/io/images/ImageOutput.hpp"
 #include "zrender/io/settings/SettingsFile.hpp"
 #include "zrender/render/Renderer.hpp"
+#include "zrender/scene/ShadingMode.hpp"
 
 namespace zrender {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-struct BenchRow {
-  std::string scene, algorithm;
-  int width = 0, height = 0, msaa = 1;
-  uint64_t faces = 0;
-  double prepareMs = 0, transformMs = 0, visibilityMs = 0, shadeMs = 0, rasterMs = 0;
-  double rasterMinMs = 0, frameMs = 0;
-  double rasterSpeedup = 0, frameSpeedup = 0;
-  int threads = 1;
-  double oneThreadFrameMs = 0, threadSpeedup = 0;  // with more than one thread
-  RenderStats stats;
-  bool identical = true;  // to the z-buffer's, and to its own with one thread
-};
-
-std::string machineName() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("model name", 0) == 0) {
-      const size_t colon = line.find(':');
-      if (colon != std::string::npos) {
-        std::string name = line.substr(colon + 1);
-        name.erase(0, name.find_first_not_of(' '));
-        return name + ", " + std::to_string(sysconf(_SC_NPROCESSORS_ONLN)) + " cores";
-      }
-    }
-  }
-  return "unknown machine";
-}
-
-std::string today() {
-  char buf[32];
-  const std::time_t t = std::time(nullptr);
-  std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&t));
-  return buf;
-}
-
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-std::string markdownTable(const std::vector<BenchRow>& rows, int repeat, int threads) {
-  std::ostringstream md;
-  const bool perThread = threads > 1;
-  md << "zrender bench: median of " << repeat << " frames, "
-     << (perThread ? std::to_string(threads) + " threads" : std::string("one thread")) << ", "
-     << machineName() << ", " << today() << "\n\n";
-  md << "| scene | size | algorithm | visibility ms | raster ms | frame ms | raster speed-up | "
-        "frame speed-up | "
-     << (perThread ? "one thread: frame ms | speed-up over one thread | " : "")
-     << "prepare ms | triangles culled by HZB | octree nodes culled | identical |\n";
-  md << "|---|---|---|---:|---:|---:|---:|---:|" << (perThread ? "---:|---:|" : "")
-     << "---:|---:|---:|---|\n";
-  for (const BenchRow& r : rows) {
-    md << "| " << r.scene << " | " << r.width << "x" << r.height << (r.msaa == 4 ? " MSAA4" : "")
-       << " | " << r.algorithm << " | " << fixed(r.visibilityMs, 2) << " | " << fixed(r.rasterMs, 2)
-       << " | " << fixed(r.frameMs, 2) << " | " << fixed(r.rasterSpeedup, 2) << "x | "
-       << fixed(r.frameSpeedup, 2) << "x | ";
-    if (perThread)
-      md << fixed(r.oneThreadFrameMs, 2) << " | " << fixed(r.threadSpeedup, 2) << "x | ";
-    md << fixed(r.prepareMs, 1) << " | " << r.stats.trianglesHzbCulled << " | "
-       << r.stats.octreeNodesCulled << "/" << r.stats.octreeNodesVisited << " | "
-       << (r.identical ? "yes" : "**NO**") << " |\n";
-  }
-  return md.str();
-}
-
-Json::Value rowToJson(const BenchRow& r) {
-  Json::Value j(Json::objectValue);
-  j["scene"] = r.scene;
-  j["algorithm"] = r.algorithm;
-  j["width"] = r.width;
-  j["height"] = r.height;
-  j["msaa"] = r.msaa;
-  j["faces"] = Json::UInt64(r.faces);
-  j["prepare_ms"] = r.prepareMs;
-  j["transform_ms"] = r.transformMs;
-  j["visibility_ms"] = r.visibilityMs;
-  j["shade_ms"] = r.shadeMs;
-  j["raster_ms"] = r.rasterMs;
-  j["raster_ms_min"] = r.rasterMinMs;
-  j["frame_ms"] = r.frameMs;
-  j["raster_speedup"] = r.rasterSpeedup;
-  j["frame_speedup"] = r.frameSpeedup;
-  j["threads"] = r.threads;
-  if (r.threads > 1) {
-    j["one_thread_frame_ms"] = r.oneThreadFrameMs;
-    j["thread_speedup"] = r.threadSpeedup;
-  }
-  j["identical"] = r.identical;
-  j["stats"] = statsToJson(r.stats);
-  return j;
-}
 
 // The z-buffer, the reference every algorithm is compared with, then the others asked for.
 std::vector<std::string> benchAlgorithms(const BenchOptions& options) {
@@ -146,13 +54,15 @@ std::vector<std::string> benchScenes(const BenchOptions& options, Warnings& warn
   return scenes;
 }
 
-// One scene's rows, an algorithm each. Every algorithm is prepared first, then the frames go
+// One scene's cells, an algorithm each. Every algorithm is prepared first, then the frames go
 // round the algorithms, so that a burst of load on the machine falls on all of them alike
 // rather than on one algorithm's frames, and the ratios of one run stay comparable. With more
 // than one thread, each algorithm also renders on one, alternated the same way, for the
-// speed-up and to check that its buffers do not depend on the threads.
-std::vector<BenchRow> benchScene(const Scene& scene, const std::vector<std::string>& algorithms,
-                                 const BenchOptions& options, std::ostream& err, bool tty) {
+// speed-up and to check that its buffers do not depend on the threads. The warm-up frames
+// (the first touches of the buffers, the caches) are rendered the same way and not timed. The
+// machine-speed probe runs between frames (MachineProbe.hpp).
+std::vector<BenchCell> benchScene(const Scene& scene, const std::vector<std::string>& algorithms,
+                                  const BenchOptions& options, std::ostream& err, bool tty) {
   const Camera camera = makeCamera(scene);
   const bool perThread = options.threads > 1;
   std::vector<std::unique_ptr<Renderer>> renderers, oneThread;
@@ -162,82 +72,130 @@ std::vector<BenchRow> benchScene(const Scene& scene, const std::vector<std::stri
   }
   const size_t n = algorithms.size();
   std::vector<std::vector<double>> transform(n), visibility(n), shade(n), raster(n), frame(n);
-  std::vector<std::vector<double>> oneThreadFrame(n);
-  for (int i = 0; i < options.repeat; ++i) {
-    if (tty)
+  std::vector<std::vector<double>> oneThreadFrame(n), probed(n);
+  MachineProbe probe;
+  double probeBefore = probe.runMs();
+  for (int i = -options.warmup; i < options.repeat; ++i) {
+    if (tty && i >= 0)
       err << "\rbench: " << scene.settings.name << " round " << (i + 1) << "/" << options.repeat
           << "   " << std::flush;
     for (size_t k = 0; k < n; ++k) {
       const FrameTimings t = renderers[k]->renderFrame(camera);
+      const double one = perThread ? oneThread[k]->renderFrame(camera).frameMs() : 0;
+      // The machine's speed during the frame: the faster of the probes just before and after
+      // it (each probe is the one after a frame and the one before the next); a probe that
+      // another process interrupted is slower, never faster.
+      const double probeAfter = probe.runMs();
+      const double probeMs = std::min(probeBefore, probeAfter);
+      probeBefore = probeAfter;
+      if (i < 0) continue;
       transform[k].push_back(t.transformMs);
       visibility[k].push_back(t.visibilityMs);
       shade[k].push_back(t.shadeMs);
       raster[k].push_back(t.rasterMs());
       frame[k].push_back(t.frameMs());
-      if (perThread) oneThreadFrame[k].push_back(oneThread[k]->renderFrame(camera).frameMs());
+      probed[k].push_back(probeMs);
+      if (perThread) oneThreadFrame[k].push_back(one);
     }
   }
   const Renderer& reference = *renderers[0];  // zbuffer
-  const double referenceRaster = median(raster[0]), referenceFrame = median(frame[0]);
-  std::vector<BenchRow> rows;
+  std::vector<BenchCell> cells;
   for (size_t k = 0; k < n; ++k) {
     const Renderer& renderer = *renderers[k];
-    BenchRow row;
-    row.scene = scene.settings.name;
-    row.algorithm = algorithms[k];
-    row.width = scene.settings.width;
-    row.height = scene.settings.height;
-    row.msaa = scene.settings.msaa;
-    row.faces = scene.faceCount();
-    row.prepareMs = renderer.prepareMs();
-    row.transformMs = median(transform[k]);
-    row.visibilityMs = median(visibility[k]);
-    row.shadeMs = median(shade[k]);
-    row.rasterMs = median(raster[k]);
-    row.rasterMinMs = *std::min_element(raster[k].begin(), raster[k].end());
-    row.frameMs = median(frame[k]);
-    row.stats = renderer.stats();
+    BenchCell cell;
+    cell.key.scene = scene.settings.name;
+    cell.key.algorithm = algorithms[k];
+    cell.key.width = scene.settings.width;
+    cell.key.height = scene.settings.height;
+    cell.key.msaa = scene.settings.msaa;
+    cell.key.shading = shadingModeName(scene.settings.shading);
+    cell.faces = scene.faceCount();
+    cell.prepareMs = roundedMs(renderer.prepareMs());
+    cell.transform = TimingSummary::of(transform[k]);
+    cell.visibility = TimingSummary::of(visibility[k]);
+    cell.shade = TimingSummary::of(shade[k]);
+    cell.raster = TimingSummary::of(raster[k]);
+    cell.frame = TimingSummary::of(frame[k]);
+    cell.probe = TimingSummary::of(probed[k]);
+    cell.stats = statsToJson(renderer.stats());
     if (k > 0)
-      row.identical = identicalFrames(renderer.buffer(), renderer.color(), reference.buffer(),
-                                      reference.color());
-    row.threads = options.threads;
+      cell.identical = identicalFrames(renderer.buffer(), renderer.color(), reference.buffer(),
+                                       reference.color());
     if (perThread) {
-      row.oneThreadFrameMs = median(oneThreadFrame[k]);
-      row.threadSpeedup = row.frameMs > 0 ? row.oneThreadFrameMs / row.frameMs : 0;
-      row.identical =
-          row.identical && identicalFrames(renderer.buffer(), renderer.color(),
-                                           oneThread[k]->buffer(), oneThread[k]->color());
+      cell.oneThreadFrame = TimingSummary::of(oneThreadFrame[k]);
+      cell.identical =
+          cell.identical && identicalFrames(renderer.buffer(), renderer.color(),
+                                            oneThread[k]->buffer(), oneThread[k]->color());
     }
-    row.rasterSpeedup = row.rasterMs > 0 ? referenceRaster / row.rasterMs : 0;
-    row.frameSpeedup = row.frameMs > 0 ? referenceFrame / row.frameMs : 0;
-    rows.push_back(row);
+    cells.push_back(cell);
   }
-  return rows;
+  return cells;
 }
 
-// --json FILE: the rows as a JSON array.
-std::string rowsJson(const std::vector<BenchRow>& rows) {
-  Json::Value all(Json::arrayValue);
-  for (const BenchRow& r : rows) all.append(rowToJson(r));
-  Json::StreamWriterBuilder builder;
-  builder["indentation"] = "  ";
-  builder["precision"] = 3;
-  builder["precisionType"] = "decimal";
-  return Json::writeString(builder, all) + "\n";
+// The outputs' names, checked before any work: a bench can run for minutes, so an output that
+// cannot be written, or a baseline that cannot be read, fails before it starts.
+std::optional<BenchRun> checkOutputs(const BenchOutputs& o) {
+  if (o.chart) checkOutputExtension(*o.chart, {".png", ".svg"}, "chart");
+  std::vector<NamedOutput> outputs;
+  const bool markdownToStdout = o.markdown && *o.markdown == "-";
+  if (o.markdown && !markdownToStdout) outputs.push_back({"--markdown", *o.markdown});
+  if (o.json) outputs.push_back({"--json", *o.json});
+  if (o.csv) outputs.push_back({"--csv", *o.csv});
+  if (o.junit) outputs.push_back({"--junit", *o.junit});
+  if (o.benchmarkAction) outputs.push_back({"--benchmark-action", *o.benchmarkAction});
+  if (o.chart) outputs.push_back({"--chart", *o.chart});
+  checkDistinctOutputs(outputs);
+  for (const NamedOutput& output : outputs) checkWritable(output.path);
+  if (o.maxSlowdownPct && !o.baseline)
+    throw InputError("command line: --max-slowdown needs --baseline");
+  if (o.baseline) return readBenchRun(*o.baseline);
+  return std::nullopt;
 }
 
-// --chart FILE.png: a group of bars per scene, a bar per algorithm.
-cv::Mat rowsChart(const std::vector<BenchRow>& rows) {
-  std::vector<ChartGroup> groups;
-  for (const BenchRow& r : rows) {
-    if (groups.empty() || groups.back().caption.rfind(r.scene, 0) != 0)
-      groups.push_back(ChartGroup{
-          r.scene + " (" + std::to_string(r.width) + "x" + std::to_string(r.height) + ", frame ms)",
-          {}});
-    groups.back().bars.push_back(ChartBar{r.algorithm, r.frameMs, r.visibilityMs});
+// The table on stdout and the files, then the one-line summary on stderr; the exit status.
+int reportRun(const BenchRun& run, const std::optional<BenchRun>& baseline, const BenchOutputs& o,
+              std::ostream& out, std::ostream& err) {
+  std::optional<BenchComparison> comparison;
+  if (baseline) comparison = compareRuns(run, *baseline, o.baseline->string(), o.maxSlowdownPct);
+  const BenchComparison* cmp = comparison ? &*comparison : nullptr;
+  const std::string markdown = benchMarkdown(run, cmp);
+  out << markdown;
+  if (o.markdown && *o.markdown != "-") appendFileAtomically(*o.markdown, markdown);
+  if (o.json) writeFileAtomically(*o.json, benchRunText(run));
+  if (o.csv) writeFileAtomically(*o.csv, benchCsv(run, cmp));
+  if (o.junit) writeFileAtomically(*o.junit, benchJunit(run, cmp));
+  if (o.benchmarkAction) writeFileAtomically(*o.benchmarkAction, benchActionJson(run));
+  if (o.chart) {
+    const ChartPicture chart = benchChart(run, cmp);
+    if (lowerExtension(*o.chart) == ".svg")
+      writeFileAtomically(*o.chart, chartSvg(chart));
+    else
+      writeImageAtomically(*o.chart, chartImage(chart));
   }
-  return drawBarChart("zrender bench: median frame ms (dark: the algorithm's own visibility ms)",
-                      groups);
+
+  std::vector<std::string> scenes, algorithms;
+  for (const BenchCell& c : run.cells) {
+    if (std::find(scenes.begin(), scenes.end(), c.key.scene) == scenes.end())
+      scenes.push_back(c.key.scene);
+    if (std::find(algorithms.begin(), algorithms.end(), c.key.algorithm) == algorithms.end())
+      algorithms.push_back(c.key.algorithm);
+  }
+  const size_t disagreements = size_t(std::count_if(
+      run.cells.begin(), run.cells.end(), [](const BenchCell& c) { return !c.identical; }));
+  err << "bench: " << scenes.size() << " scene(s) x " << algorithms.size() << " algorithm(s): "
+      << (disagreements ? std::to_string(disagreements) + " disagree with zbuffer"
+                        : std::string("all identical to zbuffer"));
+  if (cmp) {
+    err << "; against " << cmp->baselineFile << ": " << cmp->count(Verdict::Slower) << " slower, "
+        << cmp->count(Verdict::Faster) << " faster, " << cmp->count(Verdict::NoChange)
+        << " no change";
+    if (cmp->maxSlowdownPct)
+      err << ", " << cmp->failures() << " slower beyond " << *cmp->maxSlowdownPct << "%";
+  }
+  err << "\n";
+  if (disagreements) return kExitDisagree;
+  if (cmp && cmp->failures()) return kExitCheckFailed;
+  return kExitSuccess;
 }
 
 }  // namespace
@@ -245,40 +203,32 @@ cv::Mat rowsChart(const std::vector<BenchRow>& rows) {
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
   Warnings warnings;
   const std::vector<std::string> algorithms = benchAlgorithms(options);
-  if (options.chart) checkOutputExtension(*options.chart, {".png"}, "chart");
-  // A bench can run for minutes: an output that cannot be written fails before it starts.
-  std::vector<NamedOutput> outputs;
-  if (options.markdown) outputs.push_back({"--markdown", *options.markdown});
-  if (options.json) outputs.push_back({"--json", *options.json});
-  if (options.chart) outputs.push_back({"--chart", *options.chart});
-  checkDistinctOutputs(outputs);
-  for (const NamedOutput& output : outputs) checkWritable(output.path);
+  const std::optional<BenchRun> baseline = checkOutputs(options.outputs);
   const std::vector<std::string> scenes = benchScenes(options, warnings, err);
 
+  BenchRun run = BenchRun::describingThisProcess();
+  run.threads = options.threads;
+  run.repeat = options.repeat;
+  run.warmup = options.warmup;
+  run.command = options.command;
   const bool tty = isatty(STDERR_FILENO);
-  std::vector<BenchRow> rows;
   for (const std::string& sceneName : scenes) {
     const SceneSettings settings =
         resolveScene(sceneName, options.settings, options.overrides, warnings);
     const Scene scene = loadScene(settings, warnings);
     printWarnings(warnings, err);
-    for (const BenchRow& row : benchScene(scene, algorithms, options, err, tty))
-      rows.push_back(row);
+    for (BenchCell& cell : benchScene(scene, algorithms, options, err, tty))
+      run.cells.push_back(std::move(cell));
   }
   if (tty) err << "\r" << std::string(60, ' ') << "\r";
+  return reportRun(run, baseline, options.outputs, out, err);
+}
 
-  const std::string table = markdownTable(rows, options.repeat, options.threads);
-  out << table;
-  if (options.markdown) writeFileAtomically(*options.markdown, table);
-  if (options.json) writeFileAtomically(*options.json, rowsJson(rows));
-  if (options.chart) writeImageAtomically(*options.chart, rowsChart(rows));
-  const size_t disagreements = size_t(
-      std::count_if(rows.begin(), rows.end(), [](const BenchRow& r) { return !r.identical; }));
-  err << "bench: " << scenes.size() << " scene(s) x " << algorithms.size() << " algorithm(s): "
-      << (disagreements ? std::to_string(disagreements) + " disagree with zbuffer"
-                        : std::string("all identical to zbuffer"))
-      << "\n";
-  return disagreements ? 1 : 0;
+int runBenchReport(const fs::path& results, const BenchOutputs& outputs, std::ostream& out,
+                   std::ostream& err) {
+  const std::optional<BenchRun> baseline = checkOutputs(outputs);
+  const BenchRun run = readBenchRun(results);
+  return reportRun(run, baseline, outputs, out, err);
 }
 
 }  // namespace zrender

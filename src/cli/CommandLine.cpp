@@ -97,6 +97,28 @@ std::string modelFormatsText() {
   return text;
 }
 
+// The exit statuses, as --help prints them (docs/bench.md, Exit statuses).
+std::string exitStatusHelp() {
+  return "\nExit status: 0 success, 1 internal error, 2 bad input, 3 a slowdown beyond\n"
+         "--max-slowdown (or an image unlike --reference's), 4 algorithms disagree.";
+}
+
+// The files a bench run is written as, and the baseline it is compared with.
+void addBenchOutputOptions(CLI::App& app, BenchOutputs& o) {
+  app.add_option("--json", o.json, "write the results file (every sample; docs/bench.md)");
+  app.add_option("--markdown", o.markdown, "append the table as markdown to FILE (- : stdout)");
+  app.add_option("--csv", o.csv, "write a line per cell as CSV");
+  app.add_option("--junit", o.junit, "write JUnit XML, a test case per cell");
+  app.add_option("--benchmark-action", o.benchmarkAction,
+                 "write github-action-benchmark's customSmallerIsBetter JSON");
+  app.add_option("--chart", o.chart, "write a bar chart (.svg or .png)");
+  app.add_option("--baseline", o.baseline, "compare with a results file (bench --json)");
+  app.add_option("--max-slowdown", o.maxSlowdownPct,
+                 "exit 3 when a cell is slower than the baseline by more than PCT percent, "
+                 "significantly")
+      ->check(CLI::Range(0.0, 1e6));
+}
+
 bool parseArguments(CLI::App& app, int argc, char** argv, std::ostream& out) {
   try {
     app.parse(argc, argv);
@@ -118,19 +140,21 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
   const bool bench = argc > 1 && std::strcmp(argv[1], "bench") == 0;
   VectorOptions vectors;
   if (bench) {
-    CLI::App app{"Time every algorithm on every scene and check that they agree.", "zrender bench"};
+    CLI::App app{
+        "Time every algorithm on every scene and check that they agree.\n" + exitStatusHelp(),
+        "zrender bench"};
     BenchOptions options;
     std::string algs;
     app.add_option("scenes", options.scenes, "scenes (default: those with \"bench\": true)");
-    app.add_option("--algs", algs, "comma-separated algorithms (default: all)");
-    app.add_option("--repeat", options.repeat, "frames per measurement (median)")
+    app.add_option("--algs,--alg", algs, "comma-separated algorithms (default: all)");
+    app.add_option("--repeat", options.repeat, "timed frames per measurement (median)")
         ->check(CLI::Range(1, 100000));
-    app.add_option("--markdown", options.markdown, "write the table as markdown");
-    app.add_option("--json", options.json, "write the results as JSON");
-    app.add_option("--chart", options.chart, "write a bar chart (PNG)");
+    app.add_option("--warmup", options.warmup, "untimed frames first (default 1)")
+        ->check(CLI::Range(0, 100000));
     app.add_option("--threads", options.threads,
                    "threads per frame (default 1; more adds a speed-up column)")
         ->check(CLI::Range(1, kMaxThreads));
+    addBenchOutputOptions(app, options.outputs);
     addSceneOptions(app, options.overrides, vectors, options.settings);
     if (!parseArguments(app, argc - 1, argv + 1, out)) return 0;
     finishVectors(vectors, options.overrides);
@@ -141,7 +165,21 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
       checkAlgorithm(options.algorithms.back(), "--algs");
       start = comma + 1;
     }
+    options.command.assign(argv, argv + argc);
     return runBench(options, out, err);
+  }
+
+  if (argc > 1 && std::strcmp(argv[1], "bench-report") == 0) {
+    CLI::App app{"Print and write a saved bench run (bench --json) again, without rendering.\n" +
+                     exitStatusHelp(),
+                 "zrender bench-report"};
+    std::string results;
+    BenchOutputs outputs;
+    app.add_option("results", results, "a results file written by zrender bench --json")
+        ->required();
+    addBenchOutputOptions(app, outputs);
+    if (!parseArguments(app, argc - 1, argv + 1, out)) return 0;
+    return runBenchReport(results, outputs, out, err);
   }
 
   if (argc > 1 && std::strcmp(argv[1], "view") == 0) {
@@ -177,7 +215,9 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
   CLI::App app{
       "zrender: render a scene with one of five hidden-surface algorithms.\n"
       "  zrender SCENE [options]\n  zrender bench [SCENE...] [options]\n"
-      "  zrender view SCENE [options]",
+      "  zrender bench-report RESULTS.json [options]\n"
+      "  zrender view SCENE [options]\n" +
+          exitStatusHelp(),
       "zrender"};
   RenderOptions options;
   app.set_version_flag("--version", "zrender " ZRENDER_VERSION);
@@ -198,6 +238,17 @@ int parseAndRun(int argc, char** argv, std::ostream& out, std::ostream& err) {
                  "{view} {view:03}");
   app.add_option("--depth", options.depth, "depth image (.tif/.exr 32-bit float, .png 16-bit)");
   app.add_option("--ids", options.ids, "face-id image (.png)");
+  app.add_option("--reference", options.reference,
+                 "compare the color image with REF (exit 3 when it differs)")
+      ->type_name("REF");
+  app.add_option("--reference-depth", options.referenceDepth,
+                 "compare the --depth image with REF (16-bit .png, float .tif/.exr)")
+      ->type_name("REF");
+  app.add_option("--reference-ids", options.referenceIds, "compare the --ids image with REF")
+      ->type_name("REF");
+  app.add_option("--reference-tolerance", options.referenceTolerance,
+                 "pixels that may differ from a reference (default 0)")
+      ->check(CLI::Range(0LL, 16384LL * 16384LL));  // the largest image's pixels
   app.add_option("--repeat", options.repeat, "render N times; timings are the median")
       ->check(CLI::Range(1, 100000));
   app.add_flag("--json", options.json, "print one JSON object per image on stdout");
@@ -252,13 +303,13 @@ int runCommandLine(int argc, char** argv, std::ostream& out, std::ostream& err) 
     return parseAndRun(argc, argv, out, err);
   } catch (const InputError& e) {
     err << "zrender: error: " << messageLine(e.what()) << "\n";
-    return 2;
+    return kExitBadInput;
   } catch (const std::bad_alloc&) {
     err << "zrender: error: out of memory\n";
-    return 1;
+    return kExitInternalError;
   } catch (const std::exception& e) {
     err << "zrender: internal error: " << messageLine(e.what()) << "\n";
-    return 1;
+    return kExitInternalError;
   }
 }
 

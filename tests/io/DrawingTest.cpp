@@ -71,16 +71,5 @@ TEST(Drawing, AContactSheetTilesItsFramesScaledDown) {
   EXPECT_EQ(m.at<cv::Vec3b>(700, 1500), cv::Vec3b(0, 0, 0));  // no sixth frame: black
 }
 
-// A chart: white, with a bar of each position's color standing on the baseline.
-TEST(Drawing, AChartHasItsBarsOnAWhiteBackground) {
-  const cv::Mat chart = drawBarChart("t", {{"bunny", {{"zbuffer", 8.0, 4.0}, {"octree", 2.0, 0}}}});
-  ASSERT_FALSE(chart.empty());
-  const cv::Mat m = chart;
-  EXPECT_EQ(m.at<cv::Vec3b>(5, 5), cv::Vec3b(255, 255, 255));
-  // The first bar (x 40..110) is full height (baseline 410, 320 high); its lower half darker.
-  EXPECT_EQ(m.at<cv::Vec3b>(120, 75), cv::Vec3b(180, 119, 31));
-  EXPECT_EQ(m.at<cv::Vec3b>(405, 45), cv::Vec3b(99, 65, 17));  // 0.55 of it, rounded
-}
-
 }  // namespace
 }  // namespace zrender

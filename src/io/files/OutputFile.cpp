@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/io/files/FileText.hpp"
 
 namespace zrender {
 
@@ -227,6 +228,18 @@ void writeFileAtomically(const fs::path& path, const std::string& bytes) {
   OutputFile file(path);
   file.write(bytes.data(), bytes.size());
   file.commit();
+}
+
+void appendFileAtomically(const fs::path& path, const std::string& bytes) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(path, ec);
+  std::string whole;
+  if (fs::is_regular_file(status)) {
+    // A step summary is kilobytes; the limit keeps a mistaken target from filling memory.
+    const FileText old(path.string(), size_t(64) << 20);
+    whole = old.text();
+  }
+  writeFileAtomically(path, whole + bytes);
 }
 
 }  // namespace zrender

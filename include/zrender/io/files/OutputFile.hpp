@@ -79,4 +79,9 @@ void checkDistinctOutputs(const std::vector<NamedOutput>& outputs);
 // Writes `bytes` to `path` as an OutputFile.
 void writeFileAtomically(const std::filesystem::path& path, const std::string& bytes);
 
+// Adds `bytes` at the end of the regular file at `path` (a CI step summary), or makes it: the
+// old bytes and the new are written as one new file that replaces it, so a full disk or an
+// interrupt leaves the old file whole, and a symbolic link there is replaced, not followed.
+void appendFileAtomically(const std::filesystem::path& path, const std::string& bytes);
+
 }  // namespace zrender

@@ -1,7 +1,7 @@
 #pragma once
 
-// Images drawn with OpenCV's imgproc, in the process: the bench's chart, the viewer's overlay
-// and contact sheets. Each throws cv::Exception when OpenCV does.
+// Images drawn with OpenCV's imgproc, in the process: the viewer's overlay and contact sheets
+// (the bench's chart is cli/bench/BenchChart.hpp). Each throws cv::Exception when OpenCV does.
 
 #include <string>
 #include <vector>
@@ -9,25 +9,6 @@
 #include <opencv2/core/mat.hpp>
 
 namespace zrender {
-
-// One bar of a chart: a label under it and a value (milliseconds) written above it; `part` (a
-// share of the value: the algorithm's own work in a frame) is drawn darker from the baseline,
-// its value written inside.
-struct ChartBar {
-  std::string label;
-  double value = 0.0;
-  double part = 0.0;
-};
-
-// A group of bars sharing a caption (one scene of the bench table).
-struct ChartGroup {
-  std::string caption;
-  std::vector<ChartBar> bars;
-};
-
-// A grouped bar chart (8-bit BGR, white background). Each group is scaled to its own largest
-// value, since scenes differ by orders of magnitude.
-cv::Mat drawBarChart(const std::string& title, const std::vector<ChartGroup>& groups);
 
 // A rectangle of pixels: its top-left corner and its size.
 struct PixelBox {
