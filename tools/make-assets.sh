@@ -19,9 +19,7 @@ rm -f /tmp/zrender-orbit-*.png
 # Polygons drawn natively by the scan-line algorithms, triangulated by the others.
 $z shapes -o assets/shapes.png
 $z crowd -o assets/crowd.png --width 900 --height 900
-$z crowd --shading id -o assets/crowd-ids.png --width 900 --height 900
 # The deep scene of many objects: what the street shows, and its face ids.
-$z city -o assets/city.png --width 640 --height 360
 $z city --shading id -o assets/city-ids.png --width 640 --height 360
 # The viewer's window on a virtual display: the frames on screen at each key press and the last.
 xvfb-run -a $z view spot --width 480 --height 480 --keys 2,t,3,t,4,t,5,m --key-interval 30 \
