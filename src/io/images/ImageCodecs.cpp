@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
-#include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -131,53 +130,6 @@ cv::Mat decodeOrThrow(const fs::path& path, std::string& error) {
   return codecPlugin().read(path.string(), error);
 }
 
-// Reads `path` when it is a 16-bit gray PNG without transparency (the depth image zrender writes)
-// as it is kept, by libpng's full API, which changes no value (the simplified API would apply a
-// gAMA chunk): true, with `image` or `error`. False for any other PNG, which OpenCV reads, so
-// that a PNG depth image needs no codec plugin.
-bool readGray16Png(const fs::path& path, cv::Mat& image, std::string& error) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return false;
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  // Everything with a destructor is made before setjmp: libpng's errors longjmp back here.
-  std::vector<png_bytep> rows;
-  volatile bool handled = false;
-  if (!png || !info || setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    std::fclose(f);
-    if (handled) {
-      image = cv::Mat();
-      error = "cannot be read as an image (a broken 16-bit PNG)";
-    }
-    return handled;
-  }
-  png_init_io(png, f);
-  png_read_info(png, info);
-  const png_uint_32 width = png_get_image_width(png, info);
-  const png_uint_32 height = png_get_image_height(png, info);
-  if (png_get_bit_depth(png, info) == 16 && png_get_color_type(png, info) == PNG_COLOR_TYPE_GRAY &&
-      !png_get_valid(png, info, PNG_INFO_tRNS)) {
-    handled = true;
-    if (uint64_t(width) * height > kMaxImagePixels) {
-      error = "is too large (" + std::to_string(width) + " x " + std::to_string(height) +
-              " pixels, over " + std::to_string(kMaxImagePixels) + ")";
-    } else {
-      image.create(int(height), int(width), CV_16UC1);
-      rows.resize(height);
-      for (png_uint_32 y = 0; y < height; ++y) rows[y] = image.ptr(int(y));
-      if (__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__) png_set_swap(png);  // PNG is big-endian
-      png_set_interlace_handling(png);
-      png_read_update_info(png, info);
-      png_read_image(png, rows.data());
-      png_read_end(png, nullptr);
-    }
-  }
-  png_destroy_read_struct(&png, &info, nullptr);
-  std::fclose(f);
-  return handled;
-}
-
 // Turns the exceptions of `decode` into `error`, as the decoders' own failures.
 template <typename Decode>
 cv::Mat decodeCaught(const Decode& decode, std::string& error) {
@@ -218,10 +170,10 @@ cv::Mat decodeColorImage(const fs::path& path, std::string& error) {
 cv::Mat decodeImageUnchanged(const fs::path& path, std::string& error) {
   return decodeCaught(
       [&] {
+        // Through OpenCV, a 16-bit PNG too: a hand-made libpng reader needs setjmp, whose
+        // longjmp the compiler cannot prove safe for the strings around it (-Wclobbered).
         bool isPng = false;
         if (!openableImage(path, isPng, error)) return cv::Mat();
-        cv::Mat image;
-        if (isPng && readGray16Png(path, image, error)) return image;
         return codecPlugin().readUnchanged(path.string(), error);
       },
       error);
