@@ -3,12 +3,13 @@
 # assimp-testmodels: the model files assimp's own tests use, read by ModelFormats.AssimpTestModels;
 # parallel: GNU parallel, which runs the recipe of docs/cluster.md in Cluster.GnuParallel*;
 # python3-jsonschema: the validator of the bench's results file against its schema (BenchResults.*);
-# python3-yaml: reads the CI recipes of docs/ci.md (Recipes.CiWorkflowsRunInOrder).
+# python3-yaml: reads the CI recipes of docs/ci.md (Recipes.CiWorkflowsRunInOrder); chromium and
+# python3-websocket: open the HTML bench report in a browser (BenchReport.OpensInChromium).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/setup.sh"
 missing=()
-for p in assimp-testmodels parallel python3-jsonschema python3-yaml; do
+for p in assimp-testmodels parallel python3-jsonschema python3-yaml chromium python3-websocket; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if ((${#missing[@]})); then

@@ -7,11 +7,14 @@
 #include <memory>
 #include <sstream>
 
+#include <opencv2/imgproc.hpp>
+
 #include "zrender/base/Error.hpp"
 #include "zrender/cli/Report.hpp"
 #include "zrender/cli/bench/BenchChart.hpp"
 #include "zrender/cli/bench/BenchComparison.hpp"
 #include "zrender/cli/bench/BenchFormats.hpp"
+#include "zrender/cli/bench/BenchHtml.hpp"
 #include "zrender/cli/bench/BenchResults.hpp"
 #include "zrender/cli/bench/MachineProbe.hpp"
 #include "zrender/io/SceneFiles.hpp"
@@ -54,6 +57,51 @@ std::vector<std::string> benchScenes(const BenchOptions& options, Warnings& warn
   return scenes;
 }
 
+// RFC 4648 base64 of `bytes`: the picture's data: URI. Neither OpenCV nor jsoncpp exposes an
+// encoder, and a picture needs no decoder (the URI is kept as it is).
+std::string base64(const std::vector<unsigned char>& bytes) {
+  static constexpr char digits[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (size_t i = 0; i < bytes.size(); i += 3) {
+    const size_t left = bytes.size() - i;
+    const uint32_t v = uint32_t(bytes[i]) << 16 | (left > 1 ? uint32_t(bytes[i + 1]) << 8 : 0) |
+                       (left > 2 ? uint32_t(bytes[i + 2]) : 0);
+    out += digits[(v >> 18) & 63];
+    out += digits[(v >> 12) & 63];
+    out += left > 1 ? digits[(v >> 6) & 63] : '=';
+    out += left > 2 ? digits[v & 63] : '=';
+  }
+  return out;
+}
+
+// The scene's frame for the HTML report: the z-buffer's color image, at most 480 pixels a side,
+// as a JPEG data: URI; "" when the codec plugin cannot make one (the page says so).
+std::string pictureUri(const cv::Mat& color) {
+  const double scale = std::min(1.0, 480.0 / std::max(color.cols, color.rows));
+  cv::Mat small;
+  cv::resize(color, small,
+             cv::Size(std::max(1, int(color.cols * scale)), std::max(1, int(color.rows * scale))),
+             0, 0, cv::INTER_AREA);
+  std::vector<unsigned char> bytes;
+  std::string error;
+  if (!encodeImage(".jpg", small, bytes, error)) return "";
+  return "data:image/jpeg;base64," + base64(bytes);
+}
+
+BenchPicture scenePicture(const Scene& scene, const Renderer& zbuffer) {
+  BenchPicture p;
+  p.key = BenchKey{scene.settings.name,
+                   "zbuffer",
+                   shadingModeName(scene.settings.shading),
+                   scene.settings.width,
+                   scene.settings.height,
+                   scene.settings.msaa};
+  p.imageUri = pictureUri(zbuffer.color());
+  return p;
+}
+
 // One scene's cells, an algorithm each. Every algorithm is prepared first, then the frames go
 // round the algorithms, so that a burst of load on the machine falls on all of them alike
 // rather than on one algorithm's frames, and the ratios of one run stay comparable. With more
@@ -62,7 +110,8 @@ std::vector<std::string> benchScenes(const BenchOptions& options, Warnings& warn
 // (the first touches of the buffers, the caches) are rendered the same way and not timed. The
 // machine-speed probe runs between frames (MachineProbe.hpp).
 std::vector<BenchCell> benchScene(const Scene& scene, const std::vector<std::string>& algorithms,
-                                  const BenchOptions& options, std::ostream& err, bool tty) {
+                                  const BenchOptions& options, std::ostream& err, bool tty,
+                                  std::vector<BenchPicture>* pictures) {
   const Camera camera = makeCamera(scene);
   const bool perThread = options.threads > 1;
   std::vector<std::unique_ptr<Renderer>> renderers, oneThread;
@@ -99,6 +148,7 @@ std::vector<BenchCell> benchScene(const Scene& scene, const std::vector<std::str
     }
   }
   const Renderer& reference = *renderers[0];  // zbuffer
+  if (pictures) pictures->push_back(scenePicture(scene, reference));
   std::vector<BenchCell> cells;
   for (size_t k = 0; k < n; ++k) {
     const Renderer& renderer = *renderers[k];
@@ -144,6 +194,7 @@ std::optional<BenchRun> checkOutputs(const BenchOutputs& o) {
   if (o.junit) outputs.push_back({"--junit", *o.junit});
   if (o.benchmarkAction) outputs.push_back({"--benchmark-action", *o.benchmarkAction});
   if (o.chart) outputs.push_back({"--chart", *o.chart});
+  if (o.html) outputs.push_back({"--html", *o.html});
   checkDistinctOutputs(outputs);
   for (const NamedOutput& output : outputs) checkWritable(output.path);
   if (o.maxSlowdownPct && !o.baseline)
@@ -165,6 +216,7 @@ int reportRun(const BenchRun& run, const std::optional<BenchRun>& baseline, cons
   if (o.csv) writeFileAtomically(*o.csv, benchCsv(run, cmp));
   if (o.junit) writeFileAtomically(*o.junit, benchJunit(run, cmp));
   if (o.benchmarkAction) writeFileAtomically(*o.benchmarkAction, benchActionJson(run));
+  if (o.html) writeFileAtomically(*o.html, benchHtml(run, baseline ? &*baseline : nullptr, cmp));
   if (o.chart) {
     const ChartPicture chart = benchChart(run, cmp);
     if (lowerExtension(*o.chart) == ".svg")
@@ -217,7 +269,11 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
         resolveScene(sceneName, options.settings, options.overrides, warnings);
     const Scene scene = loadScene(settings, warnings);
     printWarnings(warnings, err);
-    for (BenchCell& cell : benchScene(scene, algorithms, options, err, tty))
+    // The pictures are for the results file and the HTML page; made only when one is written,
+    // since encoding one loads the codec plugin.
+    const bool pictures = options.outputs.json || options.outputs.html;
+    for (BenchCell& cell :
+         benchScene(scene, algorithms, options, err, tty, pictures ? &run.pictures : nullptr))
       run.cells.push_back(std::move(cell));
   }
   if (tty) err << "\r" << std::string(60, ' ') << "\r";

@@ -112,6 +112,7 @@ void addBenchOutputOptions(CLI::App& app, BenchOutputs& o) {
   app.add_option("--benchmark-action", o.benchmarkAction,
                  "write github-action-benchmark's customSmallerIsBetter JSON");
   app.add_option("--chart", o.chart, "write a bar chart (.svg or .png)");
+  app.add_option("--html", o.html, "write a self-contained HTML report (docs/bench.md)");
   app.add_option("--baseline", o.baseline, "compare with a results file (bench --json)");
   app.add_option("--max-slowdown", o.maxSlowdownPct,
                  "exit 3 when a cell is slower than the baseline by more than PCT percent, "

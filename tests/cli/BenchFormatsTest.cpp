@@ -103,7 +103,7 @@ TEST(BenchFormats, CsvJunitAndActionJsonHoldTheResultsNumbers) {
   // JUnit: well-formed (Python's parser), a test case per cell, its time the median in seconds.
   const std::string junit = test::readFile(s.dir.file("r.xml"));
   const auto parsed =
-      runProgram({"python3", "-c",
+      runProgram({"/usr/bin/python3", "-c",
                   "import sys, xml.etree.ElementTree as ET\n"
                   "root = ET.parse(sys.argv[1]).getroot()\n"
                   "for c in root.iter('testcase'): print(c.get('name'), c.get('time'))\n",
@@ -184,6 +184,29 @@ TEST(BenchFormats, TheChartHasOneLogAxisForAllScenes) {
       runZrender({"bench-report", s.dir.file("b.json"), "--chart", s.dir.file("c.gif")},
                  s.dir.path),
       {"c.gif"});
+}
+
+// The HTML report: one page, nothing fetched, a section with a chart per scene, a row per cell,
+// and the same bytes from bench-report (tools/bench-report-check.py opens it in Chromium).
+TEST(BenchFormats, TheHtmlReportIsOneSelfContainedPage) {
+  Square s;
+  const auto r = runZrender({"bench", "sq", "--repeat", "2", "--json", s.dir.file("r.json"),
+                             "--html", s.dir.file("r.html")},
+                            s.dir.path);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = test::readFile(s.dir.file("r.html"));
+  EXPECT_EQ(page.rfind("<!doctype html>", 0), 0u);
+  EXPECT_EQ(countOf(page, "<svg class=\"chart\""), 1u);
+  EXPECT_EQ(countOf(page, "<g class=\"series\""), 5u);
+  EXPECT_EQ(countOf(page, "<img src=\"data:image/jpeg;base64,"), 1u);
+  EXPECT_EQ(countOf(page, "<th scope=\"col\"><button"), 11u);  // no baseline, one thread
+  EXPECT_EQ(countOf(page, "</tr>"), 5u + 1 + 5 + 1);  // counters: head and 5; cells: head and 5
+  EXPECT_EQ(countOf(page, "http:") + countOf(page, "https:"), 0u) << "nothing to fetch";
+  EXPECT_NE(page.find("all 5 were identical"), std::string::npos);
+  const auto again = runZrender(
+      {"bench-report", s.dir.file("r.json"), "--html", s.dir.file("again.html")}, s.dir.path);
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(test::readFile(s.dir.file("again.html")), page);
 }
 
 }  // namespace

@@ -51,7 +51,7 @@ TEST(BenchResults, TheFileFollowsItsSchemaAndHoldsEverySample) {
       "jsonschema.Draft202012Validator.check_schema(schema)\n"
       "jsonschema.validate(json.load(open(sys.argv[2])), schema,\n"
       "                    cls=jsonschema.Draft202012Validator)\n";
-  const auto v = runProgram({"python3", "-c", validate,
+  const auto v = runProgram({"/usr/bin/python3", "-c", validate,
                              std::string(ZRENDER_SOURCE_DIR) + "/docs/bench-results.schema.json",
                              dir.file("r.json")});
   EXPECT_EQ(v.status, 0) << v.err;

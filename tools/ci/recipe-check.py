@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Runs the CI recipes of docs/ci.md as CI would, in order, so the page cannot drift.
 
     tools/ci/recipe-check.py ZRENDER_BUILD_DIR PROJECT_DIR

@@ -16,7 +16,7 @@ class InputError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// zrender's exit statuses (the README and docs/design.md, Exit statuses, list them).
+// zrender's exit statuses (the README, docs/design.md, Errors, and docs/bench.md list them).
 enum ExitStatus : int {
   kExitSuccess = 0,
   kExitInternalError = 1,  // a bug or the machine (out of memory): not the user's input

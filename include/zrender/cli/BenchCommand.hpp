@@ -13,7 +13,7 @@ namespace zrender {
 // What a bench run or a saved one is written as and compared with (docs/bench.md).
 struct BenchOutputs {
   // markdown "-": stdout. The markdown is appended to its file (a CI step summary).
-  std::optional<std::filesystem::path> json, markdown, csv, junit, benchmarkAction, chart;
+  std::optional<std::filesystem::path> json, markdown, csv, junit, benchmarkAction, chart, html;
   std::optional<std::filesystem::path> baseline;  // a results file to compare with
   std::optional<double> maxSlowdownPct;           // a significant slowdown beyond it fails (exit 3)
 };

@@ -8,6 +8,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "zrender/cli/bench/BenchFormats.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
 namespace zrender {
@@ -20,15 +21,17 @@ constexpr double kPlotLeft = 70, kPlotTop = 78, kPlotHeight = 300, kPlotBottom =
 constexpr double kBarWidth = 22, kBarGap = 4, kGroupGap = 34;
 constexpr uint32_t kInk = 0x202020, kGrid = 0xdddddd, kAxis = 0x606060;
 
-// Okabe and Ito's palette, told apart with every kind of colour blindness; an algorithm keeps
-// its color in every chart.
-uint32_t colorOf(const std::string& algorithm) {
+}  // namespace
+
+uint32_t algorithmColor(const std::string& algorithm) {
   static constexpr uint32_t palette[] = {0x0072b2, 0xe69f00, 0x009e73, 0xcc79a7, 0xd55e00};
   const std::vector<std::string>& names = algorithmNames();
   const auto it = std::find(names.begin(), names.end(), algorithm);
   const size_t i = size_t(it - names.begin());
   return i < sizeof palette / sizeof palette[0] ? palette[i] : 0x56b4e9;
 }
+
+namespace {
 
 std::string number(double v) {
   char buf[32];
@@ -118,7 +121,7 @@ ChartPicture benchChart(const BenchRun& run, const BenchComparison* comparison) 
   // The legend, one entry per algorithm, then the baseline's mark.
   double lx = kPlotLeft;
   for (const std::string& a : algorithms) {
-    shapes.push_back(box(lx, 38, lx + 12, 50, colorOf(a), "legend", a));
+    shapes.push_back(box(lx, 38, lx + 12, 50, algorithmColor(a), "legend", a));
     shapes.push_back(text(lx + 16, 49, a, 12, ChartShape::Align::Start, "legend", kInk, a));
     lx += 28 + 7.5 * double(a.size());
   }
@@ -165,7 +168,7 @@ ChartPicture benchChart(const BenchRun& run, const BenchComparison* comparison) 
       const CellComparison* cmp = comparison ? comparison->find(c.key) : nullptr;
       if (cmp) tip += "; baseline " + ms(cmp->baselineMs) + ", " + verdictName(cmp->verdict);
       shapes.push_back(
-          box(x, yOf(c.frame.median), x + kBarWidth, bottom, colorOf(alg), "bar", alg, tip));
+          box(x, yOf(c.frame.median), x + kBarWidth, bottom, algorithmColor(alg), "bar", alg, tip));
       const auto [fastest, slowest] =
           std::minmax_element(c.frame.samples.begin(), c.frame.samples.end());
       if (fastest != c.frame.samples.end()) {
@@ -192,20 +195,7 @@ std::string hex(uint32_t rgb) {
 }
 
 std::string xml(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
+  return xmlEscaped(s);
 }
 
 std::string svgShape(const ChartShape& s) {

@@ -35,6 +35,14 @@ std::string csvField(const std::string& s) {
   return q + "\"";
 }
 
+std::string keyList(const std::vector<BenchKey>& keys) {
+  std::string s;
+  for (const BenchKey& k : keys) s += (s.empty() ? "" : ", ") + k.text();
+  return s;
+}
+
+}  // namespace
+
 std::string xmlEscaped(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -58,14 +66,6 @@ std::string xmlEscaped(const std::string& s) {
   }
   return out;
 }
-
-std::string keyList(const std::vector<BenchKey>& keys) {
-  std::string s;
-  for (const BenchKey& k : keys) s += (s.empty() ? "" : ", ") + k.text();
-  return s;
-}
-
-}  // namespace
 
 const BenchCell* zbufferCellOf(const BenchRun& run, const BenchCell& cell) {
   BenchKey key = cell.key;

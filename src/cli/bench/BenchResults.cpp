@@ -194,6 +194,18 @@ Json::Value benchRunToJson(const BenchRun& run) {
     cells.append(cell);
   }
   j["cells"] = cells;
+  Json::Value pictures(Json::arrayValue);
+  for (const BenchPicture& p : run.pictures) {
+    Json::Value picture(Json::objectValue);
+    picture["scene"] = p.key.scene;
+    picture["width"] = p.key.width;
+    picture["height"] = p.key.height;
+    picture["msaa"] = p.key.msaa;
+    picture["shading"] = p.key.shading;
+    picture["image"] = p.imageUri;
+    pictures.append(picture);
+  }
+  j["pictures"] = pictures;
   return j;
 }
 
@@ -265,6 +277,25 @@ BenchRun benchRunFromJson(const Json::Value& j, const std::string& where) {
     for (const BenchCell& other : run.cells)
       if (other.key == cell.key) r.fail(at, "a second cell " + cell.key.text());
     run.cells.push_back(cell);
+  }
+  if (j.isMember("pictures")) {
+    const Json::Value& pictures = j["pictures"];
+    if (!pictures.isArray()) r.fail("pictures", "expected a list");
+    for (Json::ArrayIndex i = 0; i < pictures.size(); ++i) {
+      const std::string at = "pictures[" + std::to_string(i) + "]";
+      const Json::Value& p = pictures[i];
+      BenchPicture picture;
+      picture.key.scene = r.text(p, at, "scene");
+      picture.key.algorithm = "zbuffer";
+      picture.key.width = r.integer(p, at, "width", 1, 16384);
+      picture.key.height = r.integer(p, at, "height", 1, 16384);
+      picture.key.msaa = r.integer(p, at, "msaa", 1, 64);
+      picture.key.shading = r.text(p, at, "shading");
+      picture.imageUri = r.text(p, at, "image");
+      if (picture.imageUri.rfind("data:image/", 0) != 0)
+        r.fail(at + ".image", "expected a data: URI of an image");
+      run.pictures.push_back(picture);
+    }
   }
   return run;
 }

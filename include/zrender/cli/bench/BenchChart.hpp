@@ -29,6 +29,10 @@ struct ChartPicture {
   std::vector<ChartShape> shapes;
 };
 
+// An algorithm's color in every chart and page (0xRRGGBB): Okabe and Ito's palette, told apart
+// with every kind of colour blindness.
+uint32_t algorithmColor(const std::string& algorithm);
+
 // The bench chart (docs/bench.md, Chart): a group per scene (and size, MSAA, shading), a bar
 // per algorithm in its own color from a legend, on one logarithmic axis of frame ms shared by
 // every group, with labelled ticks; a bar's whisker spans its samples from the fastest to the

@@ -25,6 +25,10 @@ std::string benchJunit(const BenchRun& run, const BenchComparison* comparison);
 // github-action-benchmark's customSmallerIsBetter: a list of {name, unit, value, range, extra}.
 std::string benchActionJson(const BenchRun& run);
 
+// `s` with & < > " as entities and control characters other than tab and line breaks dropped:
+// text or a double-quoted attribute value in XML, SVG and HTML.
+std::string xmlEscaped(const std::string& s);
+
 // The cell of the same scene, size, MSAA and shading rendered by the z-buffer, or null.
 const BenchCell* zbufferCellOf(const BenchRun& run, const BenchCell& cell);
 

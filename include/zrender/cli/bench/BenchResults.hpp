@@ -42,6 +42,13 @@ struct BenchCell {
   bool identical = true;  // to the z-buffer's buffers, and to its own on one thread
 };
 
+// The frame of one scene (and size, MSAA, shading), the same for every algorithm: what the
+// HTML report shows, kept in the results file so that bench-report can show it again.
+struct BenchPicture {
+  BenchKey key;          // algorithm: "zbuffer", whose buffers every other one equals
+  std::string imageUri;  // "data:image/jpeg;base64,...", at most 480 pixels a side
+};
+
 // A whole `zrender bench` run: the results file (docs/bench-results.schema.json).
 struct BenchRun {
   static constexpr int kSchema = 1;
@@ -50,6 +57,7 @@ struct BenchRun {
   int cores = 0, threads = 1, repeat = 0, warmup = 0;
   std::vector<std::string> command;
   std::vector<BenchCell> cells;
+  std::vector<BenchPicture> pictures;
 
   // The zrender build and the machine this process runs on, and the time now.
   static BenchRun describingThisProcess();
