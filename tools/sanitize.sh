@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the test suite and the program it runs with AddressSanitizer and
-# UndefinedBehaviorSanitizer (-DZRENDER_SANITIZE=ON) in its own folder, at -O1 -g1 (reports keep
+# UndefinedBehaviorSanitizer (-DZRENDER_SANITIZE=ON; the tests' own code with ASan alone) in its
+# own folder, at -O1 -g1 (reports keep
 # their source lines; about half the compile time of -O2 -g), and runs the whole suite there;
 # any sanitizer report fails its test (the build passes -fno-sanitize-recover=all, so a report
 # aborts the process). Warnings are errors here (-DZRENDER_WERROR=ON), so CI fails on a new one.
