@@ -22,15 +22,15 @@ double resampledMedian(const std::vector<double>& values, std::mt19937_64& rng,
   return 0.5 * (*std::max_element(scratch.begin(), scratch.begin() + mid) + upper);
 }
 
-// The value below which a `fraction` of the sorted `values` lie (linear between neighbours).
-double quantile(const std::vector<double>& sorted, double fraction) {
+}  // namespace
+
+double sortedQuantile(const std::vector<double>& sorted, double fraction) {
+  if (sorted.empty()) return 0;
   const double at = fraction * double(sorted.size() - 1);
   const size_t below = size_t(at);
   if (below + 1 >= sorted.size()) return sorted.back();
   return sorted[below] + (at - double(below)) * (sorted[below + 1] - sorted[below]);
 }
-
-}  // namespace
 
 std::vector<double> probedFrameTimes(const BenchCell& cell) {
   std::vector<double> times = cell.frame.samples;
@@ -57,8 +57,8 @@ RatioInterval medianRatioInterval(const std::vector<double>& current,
   }
   if (ratios.empty()) return r;
   std::sort(ratios.begin(), ratios.end());
-  r.low = quantile(ratios, 0.025);
-  r.high = quantile(ratios, 0.975);
+  r.low = sortedQuantile(ratios, 0.025);
+  r.high = sortedQuantile(ratios, 0.975);
   return r;
 }
 

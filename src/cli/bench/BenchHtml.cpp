@@ -64,14 +64,10 @@ std::string groupTitle(const BenchKey& k) {
          (k.msaa > 1 ? ", MSAA " + std::to_string(k.msaa) : "") + ", " + k.shading + " shading";
 }
 
-// The value below which a `fraction` of `values` lie (linear between neighbours).
+// The value below which a `fraction` of `values` lie.
 double quantile(std::vector<double> values, double fraction) {
-  if (values.empty()) return 0;
   std::sort(values.begin(), values.end());
-  const double at = fraction * double(values.size() - 1);
-  const size_t below = size_t(at);
-  if (below + 1 >= values.size()) return values.back();
-  return values[below] + (at - double(below)) * (values[below + 1] - values[below]);
+  return sortedQuantile(values, fraction);
 }
 
 // Ticks 1, 2 or 5 times a power of ten apart, about five across [0, top].

@@ -20,6 +20,10 @@ RatioInterval medianRatioInterval(const std::vector<double>& current,
                                   const std::vector<double>& baseline, uint64_t seed = 20261128,
                                   int resamples = 10000);
 
+// The value below which a `fraction` of the ascending `sorted` values lie, linear between
+// neighbours; 0 for none. The bootstrap's interval ends and the report's quartiles.
+double sortedQuantile(const std::vector<double>& sorted, double fraction);
+
 // A cell's frame times, each divided by the machine-speed probe run just before it
 // (MachineProbe.hpp): what a comparison compares.
 std::vector<double> probedFrameTimes(const BenchCell& cell);
