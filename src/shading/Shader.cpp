@@ -133,7 +133,7 @@ bool Shader::prepareFaces(ShadingFrame& frame, bool bufferFinal) {
   if (faceColors_) frame.lookup = faceColors_->prepare(samples, &threads);
   if (surface_) {
     if (frame.faces.empty() ? surface_->setUpAll(samples)
-                            : surface_->setUpFaces(frame.faces, samples))
+                            : surface_->setUpFaces(frame.faces, samples, &threads))
       return true;
     if (!bufferFinal) return false;
     surface_->setUpVisible(*frame.fb, frame.faces, threads);

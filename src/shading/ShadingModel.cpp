@@ -29,11 +29,6 @@ Vec3 newellNormal(const Mesh& mesh, size_t face) {
   return len > 0.0 ? normal / len : Vec3(0, 0, 0);
 }
 
-Vec3 safeNormalize(const Vec3& v) {
-  const double len = cv::norm(v);
-  return len > 0.0 ? v / len : Vec3(0, 0, 1);
-}
-
 uint32_t randomFaceColor(uint32_t faceId) {
   // splitmix32-style finalizer: neighbouring ids get unrelated colors.
   uint32_t h = faceId * 0x9E3779B9u + 0x7F4A7C15u;

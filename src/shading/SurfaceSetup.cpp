@@ -105,7 +105,7 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   ++stamp_;
   batchDone_ = false;
   batched_ = false;
-  surfaces_.clear();
+  records_.clear();
   fans_.clear();
   // The view-space ray through a sample centre: x_view / -z_view = x_ndc / P00.
   rayScaleX_ = 2.0 / widthSamples / camera.projection(0, 0);
@@ -119,29 +119,62 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   frame_.rayScaleY = float(rayScaleY_);
 }
 
-bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples) {
+bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Threads* threads) {
   if (batchDone_) return batched_;
   batchDone_ = true;
   if (totalFaces(parts) * 16 > samples) return false;
   batched_ = true;
-  const Mesh& mesh = *scene_.mesh;
-  constexpr size_t kAhead = 8;
-  const auto prefetch = [&](uint32_t faceId) {
-    const uint32_t local = scene_.locate(faceId).meshFace;
-    __builtin_prefetch(&faces_[local]);
-    __builtin_prefetch(&cache_[faceId]);
-    const char* first = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local]);
-    const char* end = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local + 1]);
-    for (const char* p = first; p < end; p += 64) __builtin_prefetch(p);
+  // In order of their first row, so that the surfaces lie in memory about as the rows meet
+  // them: a face met in a row follows, a few hundred bytes on, those met in the rows above,
+  // instead of a cache miss each (a counting sort by row).
+  std::vector<uint32_t>& start = rowStart_;
+  start.assign(size_t(height_) + 1, 0);
+  const auto rowOf = [&](const ScreenFace& face) {
+    return std::min<size_t>(face.rows.first, size_t(height_ - 1));
   };
-  for (const FrameGeometry* part : parts) {
-    const GeometryVector<ScreenFace>& faces = part->faces;
-    for (size_t i = 0; i < std::min(kAhead, faces.size()); ++i) prefetch(faces[i].id);
-    for (size_t i = 0; i < faces.size(); ++i) {
-      if (i + kAhead < faces.size()) prefetch(faces[i + kAhead].id);
-      surface(faces[i].id);
-    }
+  for (const FrameGeometry* part : parts)
+    for (const ScreenFace& face : part->faces) ++start[rowOf(face) + 1];
+  for (size_t y = 1; y < start.size(); ++y) start[y] += start[y - 1];
+  std::vector<uint32_t>& order = rowOrder_;
+  order.resize(start.back());
+  for (const FrameGeometry* part : parts)
+    for (const ScreenFace& face : part->faces) order[start[rowOf(face)]++] = face.id;
+  // Face order[i] gets record firstRecord + i and a polygon its fans from firstFan_[i] on: set up
+  // side by side on the threads, each writing only its own.
+  const Mesh& mesh = *scene_.mesh;
+  const size_t firstRecord = records_.size();
+  records_.resize(firstRecord + order.size());
+  std::vector<uint32_t>& firstFan = firstFan_;
+  firstFan.resize(order.size());
+  size_t fans = fans_.size();
+  for (size_t i = 0; i < order.size(); ++i) {
+    cache_[order[i]] = Cached{stamp_, uint32_t(firstRecord + i)};
+    const uint32_t count = fanCount(mesh.cornerCount(scene_.locate(order[i]).meshFace));
+    firstFan[i] = uint32_t(fans);
+    if (count > 1) fans += count;
   }
+  fans_.resize(fans);
+  const auto setUpRange = [&](size_t begin, size_t end) {
+    constexpr size_t kAhead = 8;
+    const auto prefetch = [&](uint32_t faceId) {
+      const uint32_t local = scene_.locate(faceId).meshFace;
+      __builtin_prefetch(&faces_[local]);
+      const char* first = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local]);
+      const char* last = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local + 1]);
+      for (const char* p = first; p < last; p += 64) __builtin_prefetch(p);
+    };
+    for (size_t i = begin; i < std::min(begin + kAhead, end); ++i) prefetch(order[i]);
+    Scratch scratch;
+    for (size_t i = begin; i < end; ++i) {
+      if (i + kAhead < end) prefetch(order[i + kAhead]);
+      setUpInto(order[i], records_[firstRecord + i], fans_.data() + firstFan[i], firstFan[i],
+                scratch);
+    }
+  };
+  if (threads && threads->parallel())
+    threads->forRanges(order.size(), 256, setUpRange);
+  else
+    setUpRange(0, order.size());
   return true;
 }
 
@@ -183,6 +216,15 @@ void SurfaceSetup::setUpVisible(const FrameBuffer& fb, const FaceParts& faces,
 }
 
 uint32_t SurfaceSetup::setUp(uint32_t faceId) {
+  const uint32_t count = fanCount(scene_.mesh->cornerCount(scene_.locate(faceId).meshFace));
+  const size_t firstFan = fans_.size();
+  if (count > 1) fans_.resize(firstFan + count);
+  setUpInto(faceId, records_.emplace_back(), fans_.data() + firstFan, uint32_t(firstFan), scratch_);
+  return uint32_t(records_.size() - 1);
+}
+
+void SurfaceSetup::setUpInto(uint32_t faceId, SurfaceRecord& record, SurfaceFan* polygonFans,
+                             uint32_t firstFan, Scratch& scratch) const {
   const Mesh& mesh = *scene_.mesh;
   const FaceRef ref = scene_.locate(faceId);
   const uint32_t local = ref.meshFace;
@@ -191,20 +233,22 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
   const uint32_t n = mesh.cornerCount(local);
   const CornerData* corners = corners_.data() + mesh.faceStart[local];
   const FaceData& data = faces_[local];
-  cornerPosition_.resize(n);
-  cornerNormal_.resize(n);
+  std::vector<Vec3>& cornerPosition = scratch.position;
+  std::vector<Vec3>& cornerNormal = scratch.normal;
+  cornerPosition.resize(n);
+  cornerNormal.resize(n);
   for (uint32_t i = 0; i < n; ++i) {
-    cornerPosition_[i] = transformPoint(mv, corners[i].position);
-    cornerNormal_[i] = safeNormalize(transformDirection(mv, Vec3(corners[i].normal)));
+    cornerPosition[i] = transformAffinePoint(mv, corners[i].position);
+    cornerNormal[i] = safeNormalize(transformDirection(mv, Vec3(corners[i].normal)));
   }
-  const Vec3& p0 = cornerPosition_[0];
+  const Vec3& p0 = cornerPosition[0];
 
   FaceSurface face;
   // A back face seen (--no-cull) is lit from its own side: its normals turned to the eye.
   const bool flip =
       mode_ != ShadingMode::Normal && transformDirection(mv, Vec3(data.geometric)).dot(-p0) < 0.0;
   if (flip)
-    for (Vec3& normal : cornerNormal_) normal = -normal;
+    for (Vec3& normal : cornerNormal) normal = -normal;
   // An object's own color takes the place of its faces' (SceneObject::color).
   const cv::Vec3f& base = instance.colored ? instance.color : data.base;
   for (int i = 0; i < 3; ++i) face.base[i] = base[i] * 255.0f;
@@ -238,12 +282,12 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
   // the sample: three planes.
   const Vec3 origin(rayOriginX_ + (face.originX + 0.5) * rayScaleX_,
                     rayOriginY_ - (face.originY + 0.5) * rayScaleY_, -1.0);
-  face.firstFan = uint32_t(fans_.size());
-  face.fanCount = std::max<uint32_t>(n, 3) - 2;
+  face.firstFan = firstFan;
+  face.fanCount = fanCount(n);
   for (uint32_t j = 1; j + 1 < std::max<uint32_t>(n, 3); ++j) {
-    SurfaceFan fan{};
+    SurfaceFan& fan = face.fanCount == 1 ? record.fan : polygonFans[j - 1];
     const uint32_t corner[3] = {0, std::min(j, n - 1), std::min(j + 1, n - 1)};
-    const Vec3 e1 = cornerPosition_[corner[1]] - p0, e2 = cornerPosition_[corner[2]] - p0;
+    const Vec3 e1 = cornerPosition[corner[1]] - p0, e2 = cornerPosition[corner[2]] - p0;
     const Vec3 toEye = -p0;
     const Vec3 vectors[3] = {e2.cross(e1), e2.cross(toEye), toEye.cross(e1)};
     fan.degenerate = vectors[0] == Vec3(0, 0, 0);
@@ -259,7 +303,7 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
     // coefficient.
     double attribute[5][3];  // the normal's x, y, z and u, v at corners 0, j, j + 1
     for (int i = 0; i < 3; ++i) {
-      for (int a = 0; a < 3; ++a) attribute[a][i] = cornerNormal_[corner[i]][a];
+      for (int a = 0; a < 3; ++a) attribute[a][i] = cornerNormal[corner[i]][a];
       for (int a = 0; a < 2; ++a) attribute[3 + a][i] = corners[corner[i]].uv[a];
     }
     for (int k = 0; k < 5; ++k)
@@ -281,10 +325,8 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
       for (int a = 0; a < 3; ++a) fan.cornerNormal[i][a] = float(attribute[a][i]);
       for (int a = 0; a < 2; ++a) fan.cornerUv[i][a] = float(attribute[3 + a][i]);
     }
-    fans_.push_back(fan);
   }
-  surfaces_.push_back(face);
-  return uint32_t(surfaces_.size() - 1);
+  record.face = face;
 }
 
 }  // namespace zrender

@@ -57,6 +57,15 @@ inline Vec3 transformPoint(const Mat4& m, const Vec3& p) {
   return Vec3(r[0], r[1], r[2]);
 }
 
+// transformPoint() for a matrix whose last row is (0, 0, 0, 1), the same bits: the sums of
+// cv::Matx's product, term by term from 0, without the fourth row.
+inline Vec3 transformAffinePoint(const Mat4& m, const Vec3& p) {
+  const auto row = [&](int i) {
+    return 0.0 + m(i, 0) * p[0] + m(i, 1) * p[1] + m(i, 2) * p[2] + m(i, 3) * 1.0;
+  };
+  return Vec3(row(0), row(1), row(2));
+}
+
 inline Vec3 transformDirection(const Mat4& m, const Vec3& d) {
   return Vec3(m(0, 0) * d[0] + m(0, 1) * d[1] + m(0, 2) * d[2],
               m(1, 0) * d[0] + m(1, 1) * d[1] + m(1, 2) * d[2],

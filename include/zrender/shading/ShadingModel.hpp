@@ -21,8 +21,11 @@ Vec3 newellSum(const Mesh& mesh, size_t face);
 // The unit normal of a face; zero for a degenerate face.
 Vec3 newellNormal(const Mesh& mesh, size_t face);
 
-// v / |v|, or +Z for a zero vector.
-Vec3 safeNormalize(const Vec3& v);
+// v / |v|, or +Z for a zero vector. Inline: set-up normalizes three normals per face.
+inline Vec3 safeNormalize(const Vec3& v) {
+  const double len = cv::norm(v);
+  return len > 0.0 ? v / len : Vec3(0, 0, 1);
+}
 
 // A fixed pseudo-random color per face id (`random` shading), packed.
 uint32_t randomFaceColor(uint32_t faceId);

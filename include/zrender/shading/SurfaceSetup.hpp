@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -36,16 +38,22 @@ class SurfaceSetup {
       entry.stamp = stamp_;
       entry.index = setUp(faceId);
     }
-    return surfaces_[entry.index];
+    return records_[entry.index].face;
   }
-  const SurfaceFan* fans(const FaceSurface& face) const { return fans_.data() + face.firstFan; }
+  // The fans of a face that surface() returned, until the next call of surface().
+  const SurfaceFan* fans(const FaceSurface& face) const {
+    if (face.fanCount != 1) return fans_.data() + face.firstFan;
+    return &reinterpret_cast<const SurfaceRecord*>(reinterpret_cast<const char*>(&face) -
+                                                   offsetof(SurfaceRecord, face))
+                ->fan;
+  }
 
   // Sets up every face of `faces` (the frame's faces, which hold those in the buffer) in a
-  // batch, each face's data fetched into cache a few faces ahead, instead of one cache miss
-  // after another as rows meet the faces; only when the faces are few for the buffer's
-  // `samples` (a grid's many hidden faces are set up on first sight). Once per frame; true
-  // when the batch was set up.
-  bool setUpFaces(const FaceParts& faces, size_t samples);
+  // batch, on `threads` when given, each face's data fetched into cache a few faces ahead,
+  // instead of one cache miss after another as rows meet the faces; only when the faces are
+  // few for the buffer's `samples` (a grid's many hidden faces are set up on first sight).
+  // Once per frame; true when the batch was set up.
+  bool setUpFaces(const FaceParts& faces, size_t samples, const Threads* threads = nullptr);
   // The same for every face of the scene, for a frame whose geometry is not at hand (the
   // octree's bands pull theirs apart): only when they are few for the buffer's `samples`.
   bool setUpAll(size_t samples);
@@ -55,7 +63,23 @@ class SurfaceSetup {
   void setUpVisible(const FrameBuffer& fb, const FaceParts& faces, const Threads& threads);
 
  private:
+  // A face's surface, and its fan when it is a triangle (most faces): side by side, so that the
+  // rows' first look at a face fetches adjacent cache lines instead of one line after another
+  // from two arrays (docs/design.md, Shading).
+  struct SurfaceRecord {
+    SurfaceFan fan;
+    FaceSurface face;
+  };
+  struct Scratch {
+    std::vector<Vec3> position, normal;  // one face's corners, view space
+  };
+  static uint32_t fanCount(uint32_t corners) { return std::max<uint32_t>(corners, 3) - 2; }
+  // Sets face `faceId` up in a new record; returns its index.
   uint32_t setUp(uint32_t faceId);
+  // Sets face `faceId` up in `record`, a polygon's fans in polygonFans[0, fanCount), which are
+  // fans_ from `firstFan` on. Writes nothing else: threads may set up faces side by side.
+  void setUpInto(uint32_t faceId, SurfaceRecord& record, SurfaceFan* polygonFans, uint32_t firstFan,
+                 Scratch& scratch) const;
 
   // What setting a face up reads, gathered per mesh face at construction: a face met for the
   // first time is far in memory from the last one, and its corners' positions, normals and
@@ -91,15 +115,16 @@ class SurfaceSetup {
   int width_ = 0, height_ = 0;  // samples
   struct Cached {
     uint32_t stamp = 0;  // frame in which the entry was set up
-    uint32_t index = 0;  // into surfaces_
+    uint32_t index = 0;  // into records_
   };
   uint32_t stamp_ = 0;
   std::vector<Cached> cache_;
-  std::vector<FaceSurface> surfaces_;
-  std::vector<SurfaceFan> fans_;
-  std::vector<Vec3> cornerPosition_, cornerNormal_;  // scratch: one face's corners, view space
-  bool batchDone_ = false;                           // setUpFaces() ran in this frame
-  bool batched_ = false;                             // and set up every face of its geometry
+  std::vector<SurfaceRecord, UninitializedAllocator<SurfaceRecord>> records_;
+  std::vector<SurfaceFan, UninitializedAllocator<SurfaceFan>> fans_;  // polygons' fans
+  std::vector<uint32_t> rowStart_, rowOrder_, firstFan_;              // scratch of setUpFaces()
+  Scratch scratch_;                                                   // of setUp()
+  bool batchDone_ = false;  // setUpFaces() ran in this frame
+  bool batched_ = false;    // and set up every face of its geometry
 };
 
 }  // namespace zrender
