@@ -35,6 +35,8 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
     distinct.push_back(&t);
     return int32_t(distinct.size() - 1);
   };
+  triangles_ = true;
+  for (size_t f = 0; f < mesh.faceCount(); ++f) triangles_ = triangles_ && mesh.cornerCount(f) == 3;
   corners_.resize(mesh.corners.size());
   faces_.resize(mesh.faceCount());
   for (size_t f = 0; f < mesh.faceCount(); ++f) {
@@ -149,8 +151,9 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
   size_t fans = fans_.size();
   for (size_t i = 0; i < order.size(); ++i) {
     cache_[order[i]] = Cached{stamp_, uint32_t(firstRecord + i)};
-    const uint32_t count = fanCount(mesh.cornerCount(scene_.locate(order[i]).meshFace));
     firstFan[i] = uint32_t(fans);
+    if (triangles_) continue;
+    const uint32_t count = fanCount(mesh.cornerCount(scene_.locate(order[i]).meshFace));
     if (count > 1) fans += count;
   }
   fans_.resize(fans);
@@ -159,8 +162,11 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
     const auto prefetch = [&](uint32_t faceId) {
       const uint32_t local = scene_.locate(faceId).meshFace;
       __builtin_prefetch(&faces_[local]);
-      const char* first = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local]);
-      const char* last = reinterpret_cast<const char*>(corners_.data() + mesh.faceStart[local + 1]);
+      // A triangle's corners without a look at faceStart, itself a cache miss.
+      const size_t cornerBegin = triangles_ ? 3 * size_t(local) : mesh.faceStart[local];
+      const size_t cornerEnd = triangles_ ? cornerBegin + 3 : mesh.faceStart[local + 1];
+      const char* first = reinterpret_cast<const char*>(corners_.data() + cornerBegin);
+      const char* last = reinterpret_cast<const char*>(corners_.data() + cornerEnd);
       for (const char* p = first; p < last; p += 64) __builtin_prefetch(p);
     };
     for (size_t i = begin; i < std::min(begin + kAhead, end); ++i) prefetch(order[i]);
@@ -230,8 +236,9 @@ void SurfaceSetup::setUpInto(uint32_t faceId, SurfaceRecord& record, SurfaceFan*
   const uint32_t local = ref.meshFace;
   const SceneInstance& instance = scene_.instances[ref.instance];
   const Mat4& mv = (*modelView_)[ref.instance];
-  const uint32_t n = mesh.cornerCount(local);
-  const CornerData* corners = corners_.data() + mesh.faceStart[local];
+  const uint32_t n = triangles_ ? 3 : mesh.cornerCount(local);
+  const CornerData* corners =
+      corners_.data() + (triangles_ ? 3 * size_t(local) : mesh.faceStart[local]);
   const FaceData& data = faces_[local];
   std::vector<Vec3>& cornerPosition = scratch.position;
   std::vector<Vec3>& cornerNormal = scratch.normal;

@@ -99,6 +99,7 @@ class SurfaceSetup {
   const Scene& scene_;
   ShadingMode mode_;
   std::vector<CornerData> corners_;  // per mesh corner (Mesh::corners order)
+  bool triangles_ = true;            // every mesh face has 3 corners: face f's are 3f to 3f + 2
   std::vector<FaceData> faces_;      // per mesh face
   // The textures faces use, each framed as FaceSurface says.
   struct Texture {
