@@ -8,11 +8,13 @@ cd "$root"
 
 # libopencv-highgui-dev and libx11-dev: the window of `zrender view`; xvfb, xdotool and x11-apps
 # (xwd): its tests, which run it on a virtual display, press keys and take screenshots.
+# libosmesa6-dev: Mesa's llvmpipe through OSMesa, for tools/llvmpipe/llvmpipe-ref (built only where
+# it is found) and its test, Llvmpipe.ImagesAgree.
 packages=(g++ cmake ninja-build pkg-config
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev libopencv-videoio-dev
   libopencv-highgui-dev libx11-dev
   libpng-dev libisal-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev
-  libassimp-dev
+  libassimp-dev libosmesa6-dev
   xvfb xdotool x11-apps)
 missing=()
 for p in "${packages[@]}"; do
