@@ -4,7 +4,8 @@
 For each scene and shading mode and each thread count, runs zrender and llvmpipe-ref in turn,
 --rounds times, and prints the medians of the rounds as a markdown table (--json: one object).
 "Beyond flat" is a mode's frame minus flat's frame, same program, scene and threads: what the
-shading costs on top of visibility.
+shading costs on top of visibility. The ratio and beyond flat are medians of each round's own
+values (a scene's modes run one after another in a round).
 
 --images renders both at 1800x1800 (--image-size N: NxN) and counts the pixels that differ by
 more than 1/255 in a channel, over the whole image and away from edges (pixels whose 3x3
@@ -90,27 +91,33 @@ def measure(scenes, args, folder):
     """{(scene, mode, threads): {"zrender": [ms per round], "llvmpipe": [...]}}"""
     times = {}
     scratch = os.path.join(folder, "frame.png")
+    # A scene's modes one after another at each thread count, so that a mode and flat run
+    # close together in every round.
+    order = [(scene, mode, threads) for scene in dict.fromkeys(s for s, _ in CASES)
+             for threads in args.threads for s, mode in CASES if s == scene]
     for r in range(args.rounds):
-        for scene, mode in CASES:
-            for threads in args.threads:
-                cell = times.setdefault((scene, mode, threads), {"zrender": [], "llvmpipe": []})
-                z = scenes[scene].zrender(mode, threads, args.repeat, scratch)
-                cell["zrender"].append(z["frame_ms"])
-                ref = scenes[scene].reference(mode, threads, args.repeat)
-                cell["llvmpipe"].append(ref["frame_ms"])
-                print("round %d/%d %s %s %d threads: zrender %.2f ms, llvmpipe %.2f ms"
-                      % (r + 1, args.rounds, scene, mode, threads, z["frame_ms"],
-                         ref["frame_ms"]), file=sys.stderr)
+        for scene, mode, threads in order:
+            cell = times.setdefault((scene, mode, threads), {"zrender": [], "llvmpipe": []})
+            z = scenes[scene].zrender(mode, threads, args.repeat, scratch)
+            cell["zrender"].append(z["frame_ms"])
+            ref = scenes[scene].reference(mode, threads, args.repeat)
+            cell["llvmpipe"].append(ref["frame_ms"])
+            print("round %d/%d %s %s %d threads: zrender %.2f ms, llvmpipe %.2f ms"
+                  % (r + 1, args.rounds, scene, mode, threads, z["frame_ms"],
+                     ref["frame_ms"]), file=sys.stderr)
     rows = []
     for (scene, mode, threads), cell in times.items():
         flat = times.get((scene, "flat", threads))
+        # Ratios and differences per round, then their medians: the machine's speed changes
+        # from one round to the next, less within one.
         row = {"scene": scene, "mode": mode, "threads": threads,
                "zrender_ms": statistics.median(cell["zrender"]),
-               "llvmpipe_ms": statistics.median(cell["llvmpipe"])}
-        row["ratio"] = row["llvmpipe_ms"] / row["zrender_ms"]
+               "llvmpipe_ms": statistics.median(cell["llvmpipe"]),
+               "ratio": statistics.median(l / z for l, z in zip(cell["llvmpipe"],
+                                                                cell["zrender"]))}
         for program, key in (("zrender", "zrender_beyond_flat_ms"),
                              ("llvmpipe", "llvmpipe_beyond_flat_ms")):
-            row[key] = (statistics.median(cell[program]) - statistics.median(flat[program])
+            row[key] = (statistics.median(m - f for m, f in zip(cell[program], flat[program]))
                         if flat and mode != "flat" else None)
         rows.append(row)
     return rows
