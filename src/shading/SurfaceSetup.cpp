@@ -173,8 +173,8 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
     Scratch scratch;
     for (size_t i = begin; i < end; ++i) {
       if (i + kAhead < end) prefetch(order[i + kAhead]);
-      setUpInto(order[i], records_[firstRecord + i], fans_.data() + firstFan[i], firstFan[i],
-                scratch);
+      setUpInto(scene_.locate(order[i]), records_[firstRecord + i], fans_.data() + firstFan[i],
+                firstFan[i], scratch);
     }
   };
   if (threads && threads->parallel())
@@ -222,17 +222,17 @@ void SurfaceSetup::setUpVisible(const FrameBuffer& fb, const FaceParts& faces,
 }
 
 uint32_t SurfaceSetup::setUp(uint32_t faceId) {
-  const uint32_t count = fanCount(scene_.mesh->cornerCount(scene_.locate(faceId).meshFace));
+  const FaceRef ref = scene_.locate(faceId);
+  const uint32_t count = triangles_ ? 1 : fanCount(scene_.mesh->cornerCount(ref.meshFace));
   const size_t firstFan = fans_.size();
   if (count > 1) fans_.resize(firstFan + count);
-  setUpInto(faceId, records_.emplace_back(), fans_.data() + firstFan, uint32_t(firstFan), scratch_);
+  setUpInto(ref, records_.emplace_back(), fans_.data() + firstFan, uint32_t(firstFan), scratch_);
   return uint32_t(records_.size() - 1);
 }
 
-void SurfaceSetup::setUpInto(uint32_t faceId, SurfaceRecord& record, SurfaceFan* polygonFans,
+void SurfaceSetup::setUpInto(const FaceRef& ref, SurfaceRecord& record, SurfaceFan* polygonFans,
                              uint32_t firstFan, Scratch& scratch) const {
   const Mesh& mesh = *scene_.mesh;
-  const FaceRef ref = scene_.locate(faceId);
   const uint32_t local = ref.meshFace;
   const SceneInstance& instance = scene_.instances[ref.instance];
   const Mat4& mv = (*modelView_)[ref.instance];

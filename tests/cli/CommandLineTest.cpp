@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <memory>
 #include <set>
 #include <string>
 
@@ -24,18 +23,10 @@ namespace fs = std::filesystem;
 using test::expectCleanError;
 using test::kSquareObj;
 using test::matchesWithNumbers;
+using test::parseJson;
 using test::runZrender;
 using test::settingsFor;
 using test::TempDir;
-
-// One JSON object parsed from `text` (null, and a test failure naming the text, if it is not).
-Json::Value parseJson(const std::string& text) {
-  Json::Value j;
-  std::string errors;
-  std::unique_ptr<Json::CharReader> reader(Json::CharReaderBuilder().newCharReader());
-  EXPECT_TRUE(reader->parse(text.data(), text.data() + text.size(), &j, &errors)) << text;
-  return j;
-}
 
 TEST(CommandLine, RendersTheDefaultOutputName) {
   TempDir dir;

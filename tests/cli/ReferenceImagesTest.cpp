@@ -10,7 +10,6 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
-#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -24,6 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::expectCleanError;
 using test::kSquareObj;
+using test::parseJson;
 using test::runZrender;
 using test::settingsFor;
 using test::TempDir;
@@ -76,14 +76,6 @@ void expectRedOnlyAt(const std::string& path, int x, int y) {
         EXPECT_NE(diff.at<cv::Vec3b>(row, col), kRed) << path << " at " << col << ", " << row;
     }
   }
-}
-
-Json::Value parseJson(const std::string& text) {
-  Json::Value j;
-  std::string errors;
-  std::unique_ptr<Json::CharReader> reader(Json::CharReaderBuilder().newCharReader());
-  EXPECT_TRUE(reader->parse(text.data(), text.data() + text.size(), &j, &errors)) << text;
-  return j;
 }
 
 TEST(ReferenceImages, TheSameRenderPasses) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <memory>
 
 namespace zrender::test {
 
@@ -30,6 +31,14 @@ bool matchesWithNumbers(const std::string& text, const std::string& pattern) {
     if (t == start) return false;
   }
   return t == text.size();
+}
+
+Json::Value parseJson(const std::string& text) {
+  Json::Value j;
+  std::string errors;
+  std::unique_ptr<Json::CharReader> reader(Json::CharReaderBuilder().newCharReader());
+  EXPECT_TRUE(reader->parse(text.data(), text.data() + text.size(), &j, &errors)) << text;
+  return j;
 }
 
 void expectCleanError(const RunResult& r, const std::vector<std::string>& mustName) {

@@ -2,6 +2,8 @@
 
 // Helpers of the tests that run the built executable on the command line (cli/, e2e/).
 
+#include <json/json.h>
+
 #include <string>
 #include <vector>
 
@@ -23,6 +25,9 @@ std::string settingsFor(const std::string& model, const std::string& extra = "",
 // the form of a line whose times vary from run to run. (std::regex trips GCC 12's
 // maybe-uninitialized warning in the sanitizer build, where warnings are errors.)
 bool matchesWithNumbers(const std::string& text, const std::string& pattern);
+
+// One JSON object parsed from `text` (null, and a test failure naming the text, if it is not).
+Json::Value parseJson(const std::string& text);
 
 // Exit status 2 and one line on stderr, "zrender: error: ...", containing every piece of
 // `mustName`.

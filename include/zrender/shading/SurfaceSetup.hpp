@@ -76,10 +76,10 @@ class SurfaceSetup {
   static uint32_t fanCount(uint32_t corners) { return std::max<uint32_t>(corners, 3) - 2; }
   // Sets face `faceId` up in a new record; returns its index.
   uint32_t setUp(uint32_t faceId);
-  // Sets face `faceId` up in `record`, a polygon's fans in polygonFans[0, fanCount), which are
-  // fans_ from `firstFan` on. Writes nothing else: threads may set up faces side by side.
-  void setUpInto(uint32_t faceId, SurfaceRecord& record, SurfaceFan* polygonFans, uint32_t firstFan,
-                 Scratch& scratch) const;
+  // Sets the face at `ref` up in `record`, a polygon's fans in polygonFans[0, fanCount), which
+  // are fans_ from `firstFan` on. Writes nothing else: threads may set up faces side by side.
+  void setUpInto(const FaceRef& ref, SurfaceRecord& record, SurfaceFan* polygonFans,
+                 uint32_t firstFan, Scratch& scratch) const;
 
   // What setting a face up reads, gathered per mesh face at construction: a face met for the
   // first time is far in memory from the last one, and its corners' positions, normals and

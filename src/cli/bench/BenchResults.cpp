@@ -135,6 +135,29 @@ class Reader {
   std::string file_;
 };
 
+// A key's fields in a cell or picture object; a picture's algorithm is always the z-buffer's,
+// and not written.
+void keyToJson(const BenchKey& key, bool withAlgorithm, Json::Value& out) {
+  out["scene"] = key.scene;
+  if (withAlgorithm) out["algorithm"] = key.algorithm;
+  out["width"] = key.width;
+  out["height"] = key.height;
+  out["msaa"] = key.msaa;
+  out["shading"] = key.shading;
+}
+
+BenchKey keyFromJson(const Reader& r, const Json::Value& v, const std::string& at,
+                     bool withAlgorithm) {
+  BenchKey key;
+  key.scene = r.text(v, at, "scene");
+  key.algorithm = withAlgorithm ? r.text(v, at, "algorithm") : "zbuffer";
+  key.width = r.integer(v, at, "width", 1, 16384);
+  key.height = r.integer(v, at, "height", 1, 16384);
+  key.msaa = r.integer(v, at, "msaa", 1, 64);
+  key.shading = r.text(v, at, "shading");
+  return key;
+}
+
 }  // namespace
 
 BenchRun BenchRun::describingThisProcess() {
@@ -173,12 +196,7 @@ Json::Value benchRunToJson(const BenchRun& run) {
   Json::Value cells(Json::arrayValue);
   for (const BenchCell& c : run.cells) {
     Json::Value cell(Json::objectValue);
-    cell["scene"] = c.key.scene;
-    cell["algorithm"] = c.key.algorithm;
-    cell["width"] = c.key.width;
-    cell["height"] = c.key.height;
-    cell["msaa"] = c.key.msaa;
-    cell["shading"] = c.key.shading;
+    keyToJson(c.key, true, cell);
     cell["faces"] = Json::UInt64(c.faces);
     cell["prepare_ms"] = c.prepareMs;
     cell["frame_ms"] = timingToJson(c.frame);
@@ -186,7 +204,6 @@ Json::Value benchRunToJson(const BenchRun& run) {
     cell["visibility_ms"] = timingToJson(c.visibility);
     cell["shade_ms"] = timingToJson(c.shade);
     cell["raster_ms"] = timingToJson(c.raster);
-    cell["probe_ms"] = timingToJson(c.probe);
     cell["probe_ms"] = timingToJson(c.probe);
     if (c.oneThreadFrame) cell["one_thread_frame_ms"] = timingToJson(*c.oneThreadFrame);
     cell["stats"] = c.stats.isObject() ? c.stats : Json::Value(Json::objectValue);
@@ -197,11 +214,7 @@ Json::Value benchRunToJson(const BenchRun& run) {
   Json::Value pictures(Json::arrayValue);
   for (const BenchPicture& p : run.pictures) {
     Json::Value picture(Json::objectValue);
-    picture["scene"] = p.key.scene;
-    picture["width"] = p.key.width;
-    picture["height"] = p.key.height;
-    picture["msaa"] = p.key.msaa;
-    picture["shading"] = p.key.shading;
+    keyToJson(p.key, false, picture);
     picture["image"] = p.imageUri;
     pictures.append(picture);
   }
@@ -253,12 +266,7 @@ BenchRun benchRunFromJson(const Json::Value& j, const std::string& where) {
     const std::string at = "cells[" + std::to_string(i) + "]";
     const Json::Value& c = cells[i];
     BenchCell cell;
-    cell.key.scene = r.text(c, at, "scene");
-    cell.key.algorithm = r.text(c, at, "algorithm");
-    cell.key.width = r.integer(c, at, "width", 1, 16384);
-    cell.key.height = r.integer(c, at, "height", 1, 16384);
-    cell.key.msaa = r.integer(c, at, "msaa", 1, 64);
-    cell.key.shading = r.text(c, at, "shading");
+    cell.key = keyFromJson(r, c, at, true);
     cell.faces = uint64_t(r.number(c, at, "faces"));
     cell.prepareMs = roundedMs(r.number(c, at, "prepare_ms"));
     cell.frame = r.timing(c, at, "frame_ms");
@@ -285,12 +293,7 @@ BenchRun benchRunFromJson(const Json::Value& j, const std::string& where) {
       const std::string at = "pictures[" + std::to_string(i) + "]";
       const Json::Value& p = pictures[i];
       BenchPicture picture;
-      picture.key.scene = r.text(p, at, "scene");
-      picture.key.algorithm = "zbuffer";
-      picture.key.width = r.integer(p, at, "width", 1, 16384);
-      picture.key.height = r.integer(p, at, "height", 1, 16384);
-      picture.key.msaa = r.integer(p, at, "msaa", 1, 64);
-      picture.key.shading = r.text(p, at, "shading");
+      picture.key = keyFromJson(r, p, at, false);
       picture.imageUri = r.text(p, at, "image");
       if (picture.imageUri.rfind("data:image/", 0) != 0)
         r.fail(at + ".image", "expected a data: URI of an image");
