@@ -43,7 +43,10 @@ rc=$?
 set -e
 [ "$rc" -eq 2 ] || fail "'zrender bunny' outside the tree exited $rc: $msg"
 case $msg in *"no settings.json found"*) ;; *) fail "unexpected message: $msg" ;; esac
-"$z" --help | grep -q -- "--settings TEXT *settings file (default: ./settings.json)$" ||
+# The help is captured before grep reads it: `grep -q` stops at its match, and under pipefail a
+# zrender still writing would die of SIGPIPE and fail the check.
+help=$("$z" --help)
+grep -q -- "--settings TEXT *settings file (default: ./settings.json)$" <<<"$help" ||
   fail "--help names a settings file of a tree"
 XDG_RUNTIME_DIR=$work xvfb-run -a "$z" view shapes.obj --frames 5 --save-last last.png >/dev/null
 [ -s last.png ] || fail "view wrote no last.png"
