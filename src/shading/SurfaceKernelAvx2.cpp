@@ -318,6 +318,9 @@ template <TexelReads reads, typename Sink>
 ZRENDER_AVX2 void shadeRow(SurfaceSetup& setup, const DepthKey* keys, int width, int y,
                            uint32_t background, const Sink& sink) {
   const SurfaceFrame& frame = setup.frame();
+  // The faces met first in the next row: misses of cache while this row is shaded, instead of
+  // waiting for them there.
+  setup.prefetchRow(y + 1);
   for (int x = 0; x < width;) {
     const uint32_t id = keyFaceId(keys[x]);
     if (id == kBackgroundId) {

@@ -107,6 +107,7 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   ++stamp_;
   batchDone_ = false;
   batched_ = false;
+  byRows_ = false;
   records_.clear();
   fans_.clear();
   // The view-space ray through a sample centre: x_view / -z_view = x_ndc / P00.
@@ -126,6 +127,7 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
   batchDone_ = true;
   if (totalFaces(parts) * 16 > samples) return false;
   batched_ = true;
+  byRows_ = true;
   // In order of their first row, so that the surfaces lie in memory about as the rows meet
   // them: a face met in a row follows, a few hundred bytes on, those met in the rows above,
   // instead of a cache miss each (a counting sort by row).
@@ -145,6 +147,7 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
   // side by side on the threads, each writing only its own.
   const Mesh& mesh = *scene_.mesh;
   const size_t firstRecord = records_.size();
+  batchFirstRecord_ = firstRecord;
   records_.resize(firstRecord + order.size());
   std::vector<uint32_t>& firstFan = firstFan_;
   firstFan.resize(order.size());

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "zrender/base/Prefetch.hpp"
 #include "zrender/base/Threads.hpp"
 #include "zrender/base/UninitializedAllocator.hpp"
 #include "zrender/raster/FrameBuffer.hpp"
@@ -54,6 +55,18 @@ class SurfaceSetup {
   // few for the buffer's `samples` (a grid's many hidden faces are set up on first sight).
   // Once per frame; true when the batch was set up.
   bool setUpFaces(const FaceParts& faces, size_t samples, const Threads* threads = nullptr);
+  // Fetches into cache, ahead of the row that meets them first, what the batch's faces whose
+  // first row is `y` are looked up by: their cache entries and records (which lie side by
+  // side, setUpFaces()). A hint: it changes no color, and does nothing without a batch.
+  void prefetchRow(int y) const {
+    if (!byRows_ || y <= 0 || y >= height_) return;
+    const uint32_t begin = rowStart_[size_t(y) - 1], end = rowStart_[size_t(y)];
+    if (begin == end) return;
+    for (uint32_t i = begin; i < end; ++i) prefetchLine(&cache_[rowOrder_[i]]);
+    const char* first = reinterpret_cast<const char*>(&records_[batchFirstRecord_ + begin]);
+    const char* last = reinterpret_cast<const char*>(&records_[batchFirstRecord_ + end]);
+    for (const char* p = first; p < last; p += 64) prefetchLine(p);
+  }
   // The same for every face of the scene, for a frame whose geometry is not at hand (the
   // octree's bands pull theirs apart): only when they are few for the buffer's `samples`.
   bool setUpAll(size_t samples);
@@ -68,7 +81,12 @@ class SurfaceSetup {
   // from two arrays (docs/design.md, Shading).
   struct SurfaceRecord {
     SurfaceFan fan;
-    FaceSurface face;
+    // Left unconstructed by records_.resize(), written in full by setUpInto(): a batch's
+    // records, initialized first, would be written twice (a frame's records are megabytes).
+    union {
+      FaceSurface face;
+    };
+    SurfaceRecord() {}
   };
   struct Scratch {
     std::vector<Vec3> position, normal;  // one face's corners, view space
@@ -122,10 +140,15 @@ class SurfaceSetup {
   std::vector<Cached> cache_;
   std::vector<SurfaceRecord, UninitializedAllocator<SurfaceRecord>> records_;
   std::vector<SurfaceFan, UninitializedAllocator<SurfaceFan>> fans_;  // polygons' fans
-  std::vector<uint32_t> rowStart_, rowOrder_, firstFan_;              // scratch of setUpFaces()
-  Scratch scratch_;                                                   // of setUp()
+  // Of setUpFaces(): the batch's faces in order of their first row, those of row y at
+  // rowOrder_[rowStart_[y - 1], rowStart_[y]) (from 0 for row 0), their records from
+  // batchFirstRecord_ on in the same order; and scratch.
+  std::vector<uint32_t> rowStart_, rowOrder_, firstFan_;
+  size_t batchFirstRecord_ = 0;
+  Scratch scratch_;         // of setUp()
   bool batchDone_ = false;  // setUpFaces() ran in this frame
   bool batched_ = false;    // and set up every face of its geometry
+  bool byRows_ = false;     // setUpFaces() set the batch up, in order of first row
 };
 
 }  // namespace zrender
