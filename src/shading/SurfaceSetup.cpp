@@ -5,6 +5,8 @@
 #include <cmath>
 #include <mutex>
 
+#include "zrender/base/CpuFeatures.hpp"
+#include "zrender/base/Prefetch.hpp"
 #include "zrender/shading/ShadingModel.hpp"
 
 namespace zrender {
@@ -160,6 +162,7 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
     if (count > 1) fans += count;
   }
   fans_.resize(fans);
+  const bool fourAtOnce = triangles_ && cpuHasAvx2();
   const auto setUpRange = [&](size_t begin, size_t end) {
     constexpr size_t kAhead = 8;
     const auto prefetch = [&](uint32_t faceId) {
@@ -172,10 +175,30 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
       const char* last = reinterpret_cast<const char*>(corners_.data() + cornerEnd);
       for (const char* p = first; p < last; p += 64) __builtin_prefetch(p);
     };
+    // The records written a few faces ahead: each line of them must be read before it is
+    // written, and the records of the last frame are long out of cache.
+    const auto prefetchRecords = [&](size_t from, size_t to) {
+      const char* first = reinterpret_cast<const char*>(&records_[firstRecord + from]);
+      const char* last = reinterpret_cast<const char*>(&records_[firstRecord + to]);
+      for (const char* p = first; p < last; p += 64) prefetchLine(p);
+    };
     for (size_t i = begin; i < std::min(begin + kAhead, end); ++i) prefetch(order[i]);
+    size_t i = begin;
+    // Four at a time where they are triangles and the CPU has AVX2.
+    for (; fourAtOnce && i + 4 <= end; i += 4) {
+      for (size_t k = i + kAhead; k < std::min(i + kAhead + 4, end); ++k) prefetch(order[k]);
+      if (i + kAhead < end) prefetchRecords(i + kAhead, std::min(i + kAhead + 4, end));
+      SurfaceRecord* const records[4] = {&records_[firstRecord + i], &records_[firstRecord + i + 1],
+                                         &records_[firstRecord + i + 2],
+                                         &records_[firstRecord + i + 3]};
+      setUpFourTriangles(&order[i], records, &firstFan[i]);
+    }
     Scratch scratch;
-    for (size_t i = begin; i < end; ++i) {
-      if (i + kAhead < end) prefetch(order[i + kAhead]);
+    for (; i < end; ++i) {
+      if (i + kAhead < end) {
+        prefetch(order[i + kAhead]);
+        prefetchRecords(i + kAhead, i + kAhead + 1);
+      }
       setUpInto(scene_.locate(order[i]), records_[firstRecord + i], fans_.data() + firstFan[i],
                 firstFan[i], scratch);
     }
@@ -233,32 +256,10 @@ uint32_t SurfaceSetup::setUp(uint32_t faceId) {
   return uint32_t(records_.size() - 1);
 }
 
-void SurfaceSetup::setUpInto(const FaceRef& ref, SurfaceRecord& record, SurfaceFan* polygonFans,
-                             uint32_t firstFan, Scratch& scratch) const {
-  const Mesh& mesh = *scene_.mesh;
-  const uint32_t local = ref.meshFace;
+FaceSurface SurfaceSetup::faceFields(const FaceRef& ref) const {
   const SceneInstance& instance = scene_.instances[ref.instance];
-  const Mat4& mv = (*modelView_)[ref.instance];
-  const uint32_t n = triangles_ ? 3 : mesh.cornerCount(local);
-  const CornerData* corners =
-      corners_.data() + (triangles_ ? 3 * size_t(local) : mesh.faceStart[local]);
-  const FaceData& data = faces_[local];
-  std::vector<Vec3>& cornerPosition = scratch.position;
-  std::vector<Vec3>& cornerNormal = scratch.normal;
-  cornerPosition.resize(n);
-  cornerNormal.resize(n);
-  for (uint32_t i = 0; i < n; ++i) {
-    cornerPosition[i] = transformAffinePoint(mv, corners[i].position);
-    cornerNormal[i] = safeNormalize(transformDirection(mv, Vec3(corners[i].normal)));
-  }
-  const Vec3& p0 = cornerPosition[0];
-
+  const FaceData& data = faces_[ref.meshFace];
   FaceSurface face;
-  // A back face seen (--no-cull) is lit from its own side: its normals turned to the eye.
-  const bool flip =
-      mode_ != ShadingMode::Normal && transformDirection(mv, Vec3(data.geometric)).dot(-p0) < 0.0;
-  if (flip)
-    for (Vec3& normal : cornerNormal) normal = -normal;
   // An object's own color takes the place of its faces' (SceneObject::color).
   const cv::Vec3f& base = instance.colored ? instance.color : data.base;
   for (int i = 0; i < 3; ++i) face.base[i] = base[i] * 255.0f;
@@ -272,9 +273,13 @@ void SurfaceSetup::setUpInto(const FaceRef& ref, SurfaceRecord& record, SurfaceF
     face.textureWidth = t.width;
     face.textureHeight = t.height;
   }
-  // The planes' origin: the sample of the first corner when it lies in front of the eye
-  // (clamped to the image), else the image's centre. From the face alone, so that it is the
-  // same whichever sample meets the face first.
+  return face;
+}
+
+void SurfaceSetup::placeOrigin(FaceSurface& face, const Vec3& p0) const {
+  // The sample of the first corner when it lies in front of the eye (clamped to the image),
+  // else the image's centre. From the face alone, so that it is the same whichever sample
+  // meets the face first.
   face.originX = width_ / 2;
   face.originY = height_ / 2;
   if (p0[2] < 0.0) {
@@ -285,6 +290,33 @@ void SurfaceSetup::setUpInto(const FaceRef& ref, SurfaceRecord& record, SurfaceF
       face.originY = int32_t(std::clamp(std::round(y), 0.0, height_ - 1.0));
     }
   }
+}
+
+void SurfaceSetup::setUpInto(const FaceRef& ref, SurfaceRecord& record, SurfaceFan* polygonFans,
+                             uint32_t firstFan, Scratch& scratch) const {
+  const Mesh& mesh = *scene_.mesh;
+  const uint32_t local = ref.meshFace;
+  const Mat4& mv = (*modelView_)[ref.instance];
+  const uint32_t n = triangles_ ? 3 : mesh.cornerCount(local);
+  const CornerData* corners =
+      corners_.data() + (triangles_ ? 3 * size_t(local) : mesh.faceStart[local]);
+  std::vector<Vec3>& cornerPosition = scratch.position;
+  std::vector<Vec3>& cornerNormal = scratch.normal;
+  cornerPosition.resize(n);
+  cornerNormal.resize(n);
+  for (uint32_t i = 0; i < n; ++i) {
+    cornerPosition[i] = transformAffinePoint(mv, corners[i].position);
+    cornerNormal[i] = safeNormalize(transformDirection(mv, Vec3(corners[i].normal)));
+  }
+  const Vec3& p0 = cornerPosition[0];
+
+  FaceSurface face = faceFields(ref);
+  // A back face seen (--no-cull) is lit from its own side: its normals turned to the eye.
+  const bool flip = mode_ != ShadingMode::Normal &&
+                    transformDirection(mv, Vec3(faces_[local].geometric)).dot(-p0) < 0.0;
+  if (flip)
+    for (Vec3& normal : cornerNormal) normal = -normal;
+  placeOrigin(face, p0);
   // The ray through a sample is affine in its position, dir = (rayOriginX + (x + 0.5)
   // rayScaleX, rayOriginY - (y + 0.5) rayScaleY, -1), so for a fan triangle with edges e1, e2
   // from p0, the intersection's weights u = dir.(e2 x -p0) / dir.(e2 x e1) and v = dir.(-p0 x

@@ -1,13 +1,16 @@
 // SurfaceSetup: a frame's faces set up in a batch (in row order, on the threads) hold the same
 // bits as each face set up alone when a row meets it: every plane, corner attribute and field,
 // for every face of the model, front and back (the back ones turned to the eye), triangles and
-// polygons, on one instance and on a grid.
+// polygons, on one instance and on a grid. On a CPU with AVX2 the batch sets triangles up four
+// at a time (SurfaceSetupAvx2.cpp), and a face set up alone goes through the scalar code: this
+// is the test that the two give the same bits.
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -102,6 +105,44 @@ TEST(SurfaceSetup, BatchHoldsTheBitsOfFacesSetUpAlone) {
         expectBatchAgrees(scene, threads,
                           name + " " + shadingModeName(mode) + " " + std::to_string(threads));
     }
+  }
+}
+
+// Triangles that take the set-up's other branches, in every lane of a group of four: zero area
+// (a corner repeated, three corners on a line), corners at and behind the eye (the planes'
+// origin at the image's centre), faces seen from behind (turned to the eye), among random ones.
+TEST(SurfaceSetup, BatchHoldsTheBitsOfOddTrianglesSetUpAlone) {
+  std::vector<Vec3> positions;
+  std::vector<std::vector<int>> faces;
+  const auto add = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
+    const int base = int(positions.size());
+    positions.push_back(a);
+    positions.push_back(b);
+    positions.push_back(c);
+    faces.push_back({base, base + 1, base + 2});
+  };
+  const Vec3 eye(0, 0, 2);  // tinySettings' eye
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coord(-1.0, 1.0);
+  const auto random = [&] { return Vec3(coord(rng), coord(rng), coord(rng)); };
+  for (int k = 0; k < 9; ++k) {  // each kind in several lanes of the groups
+    const Vec3 a = random(), b = random(), c = random();
+    add(a, a, b);                                  // a corner repeated
+    add(a, 0.5 * (a + b), b);                      // on a line
+    add(eye, a, b);                                // first corner at the eye
+    add(a + Vec3(0, 0, 2.5), b, c);                // first corner behind the eye
+    add(a + Vec3(0, 0, 3), b + Vec3(0, 0, 3), c);  // two behind
+    add(c, b, a);                                  // wound the other way
+    add(random(), random(), random());
+  }
+  SceneSettings settings = test::tinySettings(64);
+  settings.cull = false;
+  for (const ShadingMode mode : {ShadingMode::Normal, ShadingMode::Phong}) {
+    settings.shading = mode;
+    const Scene scene = makeScene(settings, test::makeMesh(positions, faces));
+    for (const int threads : {1, 2})
+      expectBatchAgrees(scene, threads,
+                        "odd triangles " + shadingModeName(mode) + " " + std::to_string(threads));
   }
 }
 

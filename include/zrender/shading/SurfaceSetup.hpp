@@ -98,6 +98,15 @@ class SurfaceSetup {
   // are fans_ from `firstFan` on. Writes nothing else: threads may set up faces side by side.
   void setUpInto(const FaceRef& ref, SurfaceRecord& record, SurfaceFan* polygonFans,
                  uint32_t firstFan, Scratch& scratch) const;
+  // setUpInto() for four faces of a mesh of triangles at once (SurfaceSetupAvx2.cpp), in
+  // AVX2's four doubles: its operations lane by lane, in the same order, so the same bits
+  // (tested). Call only when cpuHasAvx2() and triangles_.
+  void setUpFourTriangles(const uint32_t faceIds[4], SurfaceRecord* const records[4],
+                          const uint32_t firstFans[4]) const;
+  // What a face's surface takes from its instance and material: base color and texture.
+  FaceSurface faceFields(const FaceRef& ref) const;
+  // Sets face.originX and originY from the first corner p0 (view space).
+  void placeOrigin(FaceSurface& face, const Vec3& p0) const;
 
   // What setting a face up reads, gathered per mesh face at construction: a face met for the
   // first time is far in memory from the last one, and its corners' positions, normals and
