@@ -167,27 +167,23 @@ bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Thre
     constexpr size_t kAhead = 8;
     const auto prefetch = [&](uint32_t faceId) {
       const uint32_t local = scene_.locate(faceId).meshFace;
-      __builtin_prefetch(&faces_[local]);
+      prefetchLine(&faces_[local]);
       // A triangle's corners without a look at faceStart, itself a cache miss.
       const size_t cornerBegin = triangles_ ? 3 * size_t(local) : mesh.faceStart[local];
       const size_t cornerEnd = triangles_ ? cornerBegin + 3 : mesh.faceStart[local + 1];
       const char* first = reinterpret_cast<const char*>(corners_.data() + cornerBegin);
       const char* last = reinterpret_cast<const char*>(corners_.data() + cornerEnd);
-      for (const char* p = first; p < last; p += 64) __builtin_prefetch(p);
-    };
-    // The records written a few faces ahead: each line of them must be read before it is
-    // written, and the records of the last frame are long out of cache.
-    const auto prefetchRecords = [&](size_t from, size_t to) {
-      const char* first = reinterpret_cast<const char*>(&records_[firstRecord + from]);
-      const char* last = reinterpret_cast<const char*>(&records_[firstRecord + to]);
       for (const char* p = first; p < last; p += 64) prefetchLine(p);
     };
+    // The records are fetched a few faces ahead too: each line of them is read before it is
+    // written, and the records of the last frame are long out of cache.
     for (size_t i = begin; i < std::min(begin + kAhead, end); ++i) prefetch(order[i]);
     size_t i = begin;
     // Four at a time where they are triangles and the CPU has AVX2.
     for (; fourAtOnce && i + 4 <= end; i += 4) {
-      for (size_t k = i + kAhead; k < std::min(i + kAhead + 4, end); ++k) prefetch(order[k]);
-      if (i + kAhead < end) prefetchRecords(i + kAhead, std::min(i + kAhead + 4, end));
+      const size_t aheadEnd = std::min(i + kAhead + 4, end);
+      for (size_t k = i + kAhead; k < aheadEnd; ++k) prefetch(order[k]);
+      if (i + kAhead < end) prefetchRecords(i + kAhead, aheadEnd);
       SurfaceRecord* const records[4] = {&records_[firstRecord + i], &records_[firstRecord + i + 1],
                                          &records_[firstRecord + i + 2],
                                          &records_[firstRecord + i + 3]};

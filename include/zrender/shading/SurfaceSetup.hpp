@@ -63,9 +63,7 @@ class SurfaceSetup {
     const uint32_t begin = rowStart_[size_t(y) - 1], end = rowStart_[size_t(y)];
     if (begin == end) return;
     for (uint32_t i = begin; i < end; ++i) prefetchLine(&cache_[rowOrder_[i]]);
-    const char* first = reinterpret_cast<const char*>(&records_[batchFirstRecord_ + begin]);
-    const char* last = reinterpret_cast<const char*>(&records_[batchFirstRecord_ + end]);
-    for (const char* p = first; p < last; p += 64) prefetchLine(p);
+    prefetchRecords(begin, end);
   }
   // The same for every face of the scene, for a frame whose geometry is not at hand (the
   // octree's bands pull theirs apart): only when they are few for the buffer's `samples`.
@@ -103,6 +101,12 @@ class SurfaceSetup {
   // (tested). Call only when cpuHasAvx2() and triangles_.
   void setUpFourTriangles(const uint32_t faceIds[4], SurfaceRecord* const records[4],
                           const uint32_t firstFans[4]) const;
+  // Fetches into cache the lines of the batch's records [from, to) (rowOrder_'s order).
+  void prefetchRecords(size_t from, size_t to) const {
+    const char* first = reinterpret_cast<const char*>(records_.data() + batchFirstRecord_ + from);
+    const char* last = reinterpret_cast<const char*>(records_.data() + batchFirstRecord_ + to);
+    for (const char* p = first; p < last; p += 64) prefetchLine(p);
+  }
   // What a face's surface takes from its instance and material: base color and texture.
   FaceSurface faceFields(const FaceRef& ref) const;
   // Sets face.originX and originY from the first corner p0 (view space).
