@@ -7,12 +7,16 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "zrender/io/obj/ObjLoader.hpp"
@@ -162,11 +166,13 @@ RunResult runZrender(const std::vector<std::string>& args, const std::string& di
 }
 
 TempDir::TempDir() {
-  static std::atomic<int> counter{0};
-  const auto base = std::filesystem::temp_directory_path() /
-                    ("zrender-test-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
-  std::filesystem::create_directories(base);
-  path = base.string();
+  // mkdtemp makes a folder no one else has: a name built from the process id could meet a
+  // folder left by an earlier process with that id, files and all.
+  std::string name = (std::filesystem::temp_directory_path() / "zrender-test-XXXXXX").string();
+  if (mkdtemp(name.data()) == nullptr) {
+    throw std::runtime_error("cannot make a folder from " + name + ": " + std::strerror(errno));
+  }
+  path = name;
 }
 
 TempDir::~TempDir() {
