@@ -12,7 +12,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The plugin's dlopen handle, or null with the reason in `error`.
+// The interface tag of a plugin's build (src/base/plugin/PluginAbi.cpp), or "none" for a
+// plugin without one.
+std::string abiOf(void* handle) {
+  using Tag = const char* (*)();
+  const auto tag = reinterpret_cast<Tag>(dlsym(handle, "zrenderPluginAbi"));
+  return tag ? tag() : "none";
+}
+
+// The plugin's dlopen handle, or null with the reason in `error`. A plugin of another build is
+// closed and the next place tried: its classes may not be this build's.
 void* openPlugin(const std::string& fileName, std::string& error) {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
@@ -26,10 +35,22 @@ void* openPlugin(const std::string& fileName, std::string& error) {
   const std::vector<fs::path> candidates = {folder.parent_path() / "lib" / "zrender" / fileName,
                                             folder / fileName, folder.parent_path() / fileName};
   error = "not found in " + candidates[0].parent_path().string() + " nor beside " + exe.string();
+  bool foreign = false;
   for (const fs::path& c : candidates) {
     if (!fs::exists(c, ec)) continue;
-    if (void* handle = dlopen(c.c_str(), RTLD_NOW | RTLD_LOCAL)) return handle;
-    error = dlerror();
+    void* handle = dlopen(c.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      if (!foreign) error = dlerror();
+      continue;
+    }
+    const std::string abi = abiOf(handle);
+    if (abi == ZRENDER_PLUGIN_ABI) return handle;
+    dlclose(handle);
+    if (!foreign) {
+      error = c.string() + " is from another build of zrender (interface " + abi +
+              ", this zrender's " + ZRENDER_PLUGIN_ABI + "); install zrender again";
+      foreign = true;
+    }
   }
   return nullptr;
 }

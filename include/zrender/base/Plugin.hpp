@@ -13,7 +13,10 @@ namespace zrender {
 // The object that the factory `factory` of the plugin `fileName` (e.g. "libzrender_codecs.so")
 // returns, the plugin found relative to the executable only: in ../lib/zrender/ (an installed
 // zrender: P/bin/zrender, P/lib/zrender/), then beside it and in its parent folder (the build
-// tree). It lives as long as the process. Throws std::runtime_error naming the file and why.
+// tree). A plugin whose interface tag (src/base/plugin/PluginAbi.cpp: a hash of the headers,
+// version and compiler it was built with) is not this build's is passed over: its classes may
+// not be the ones this build calls. The object lives as long as the process. Throws
+// std::runtime_error naming the file and why.
 void* pluginObject(const std::string& fileName, const char* factory);
 
 template <typename Interface>
