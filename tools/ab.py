@@ -3,11 +3,14 @@
 
     tools/ab.py [--runs N] BINARY... -- ZRENDER-ARGS...
 
-Runs `BINARY ZRENDER-ARGS --json` for each binary in turn, N rounds (default 7), so that a
-burst of load on the machine falls on all of them alike, and prints per binary the medians over
-the rounds of transform_ms, raster_ms, raster_ms_min and frame_ms (each run's own values are
-already medians when ZRENDER-ARGS has --repeat). This is how the "alternated runs" of docs/performance.md
-were measured, e.g.:
+Runs `BINARY ZRENDER-ARGS --json` for each binary in turn, N rounds (default 7), every other
+round in reverse order, so that a burst of load on the machine falls on all of them alike and no
+binary always runs first, and prints per binary the medians over the rounds of transform_ms,
+raster_ms, raster_ms_min and frame_ms (each run's own values are already medians when
+ZRENDER-ARGS has --repeat), and, given several binaries, the median over the rounds of each
+one's shade_ms and frame_ms divided by the first binary's in the same round: the figure to
+judge a change by, as this machine's speed drifts between rounds. This is how the "alternated
+runs" of docs/performance.md were measured, e.g.:
 
     cp build/zrender /tmp/zrender-before      # then change, rebuild, and:
     tools/ab.py /tmp/zrender-before build/zrender -- crowd --alg octree --repeat 9 -o /tmp/x.png
@@ -121,6 +124,8 @@ def main():
     # What runs in each round, in order: a binary with a variant's arguments (label, argv).
     variants = [(v, shlex.split(v)) for v in options.variant] or [("", [])]
     runs = [(f"{b} {v}".strip(), b, extra) for b in options.binaries for v, extra in variants]
+    labels = {(b, v): f"{b} {v}".strip() for b in options.binaries for v, _ in variants}
+    variant_of = {label: v for (b, v), label in labels.items()}
 
     busy_rounds = 0
     if options.wall:
@@ -145,10 +150,11 @@ def main():
         return
 
     values = {label: {f: [] for f in FIELDS} for label, _, _ in runs}
-    for _ in range(options.runs):
+    for round_ in range(options.runs):
         if options.idle and not wait_idle():
             busy_rounds += 1
-        for label, binary, extra in runs:
+        # Every other round in reverse order, as --wall does.
+        for label, binary, extra in runs if round_ % 2 == 0 else runs[::-1]:
             result = run_once(binary, args + extra)
             for field in FIELDS:
                 if field in result:  # builds from before visibility_ms and shade_ms lack them
@@ -164,6 +170,14 @@ def main():
             # Within each round, as --wall does.
             ratio = statistics.median(a / b for a, b in zip(first, v["frame_ms"]))
             cells += f"  first/this {ratio:6.3f}"
+        if len(options.binaries) > 1:
+            # Against the first binary with the same variant, within each round: the machine's
+            # speed drifts between rounds, and a ratio of medians would carry the drift.
+            ref = values[labels[(options.binaries[0], variant_of[label])]]
+            for f in ("shade_ms", "frame_ms"):
+                if v[f] and ref[f]:
+                    r = statistics.median(b / a for a, b in zip(ref[f], v[f]))
+                    cells += f"  {f}/first's {r:6.3f}"
         print(f"{label:<{width}}  {cells}")
 
 
