@@ -90,23 +90,22 @@ ZRENDER_AVX2 inline void loadPairs(const uint32_t* texels, const int32_t index[8
 
 // sampleTexture's operations: R, G, B in 0..255, the texels read as `reads` says.
 template <TexelReads reads>
-ZRENDER_AVX2 inline void sampleTexture(const FaceSurface& f, F u, F v, F rgb[3]) {
+ZRENDER_AVX2 inline void sampleTexture(const SurfaceTexture& t, F u, F v, F rgb[3]) {
   const F zero = _mm256_setzero_ps();
   const F uu = _mm256_max_ps(_mm256_sub_ps(u, _mm256_floor_ps(u)), zero);
   const F vv = _mm256_max_ps(_mm256_sub_ps(v, _mm256_floor_ps(v)), zero);
-  const F tx = _mm256_fmadd_ps(uu, splat(float(f.textureWidth)), splat(-0.5f));
-  const F ty =
-      _mm256_fmadd_ps(vv, splat(-float(f.textureHeight)), splat(float(f.textureHeight) - 0.5f));
+  const F tx = _mm256_fmadd_ps(uu, splat(float(t.width)), splat(-0.5f));
+  const F ty = _mm256_fmadd_ps(vv, splat(-float(t.height)), splat(float(t.height) - 0.5f));
   const F fx0 = _mm256_floor_ps(tx), fy0 = _mm256_floor_ps(ty);
   const F fx = _mm256_sub_ps(tx, fx0), fy = _mm256_sub_ps(ty, fy0);
-  const int stride = f.textureWidth + 2;
+  const int stride = t.width + 2;
   const I index0 = _mm256_add_epi32(
       _mm256_add_epi32(_mm256_mullo_epi32(_mm256_cvttps_epi32(fy0), _mm256_set1_epi32(stride)),
                        _mm256_cvttps_epi32(fx0)),
       _mm256_set1_epi32(stride + 1));
   I a, b, c, d;  // texels (x0, y0), (x0 + 1, y0), (x0, y0 + 1), (x0 + 1, y0 + 1)
   if (reads == TexelReads::Gathers) {
-    const int* texels = reinterpret_cast<const int*>(f.texels);
+    const int* texels = reinterpret_cast<const int*>(t.texels);
     a = _mm256_i32gather_epi32(texels, index0, 4);
     b = _mm256_i32gather_epi32(texels + 1, index0, 4);
     c = _mm256_i32gather_epi32(texels + stride, index0, 4);
@@ -114,8 +113,8 @@ ZRENDER_AVX2 inline void sampleTexture(const FaceSurface& f, F u, F v, F rgb[3])
   } else {
     alignas(32) int32_t index[8];
     _mm256_store_si256(reinterpret_cast<__m256i*>(index), index0);
-    loadPairs(f.texels, index, 0, a, b);
-    loadPairs(f.texels, index, stride, c, d);
+    loadPairs(t.texels, index, 0, a, b);
+    loadPairs(t.texels, index, stride, c, d);
   }
   for (int i = 0; i < 3; ++i) {
     const int byte = 2 - i;  // R, G, B
@@ -192,7 +191,9 @@ template <TexelReads reads, typename Sink>
   const RowPlane den = planes[kDen], pu = planes[kPu], pv = planes[kPv];
   const RowPlane normal[3] = {planes[kNormalX], planes[kNormalY], planes[kNormalZ]};
   RowPlane uv[2] = {};
-  if (face.textured) uv[0] = planes[kTextureU], uv[1] = planes[kTextureV];
+  if (face.textured()) uv[0] = planes[kTextureU], uv[1] = planes[kTextureV];
+  // A copy: the stores of colors below may alias the frame's table, not a local.
+  const SurfaceTexture texture = face.textured() ? f.textures[face.texture] : SurfaceTexture();
   const bool lit = f.mode != ShadingMode::Normal;
   const float dyValue = std::fma(float(y), -f.rayScaleY, f.rayOriginY);
   const F dy = splat(dyValue), dyTerm = splat(std::fma(dyValue, dyValue, 1.0f));
@@ -220,7 +221,7 @@ template <TexelReads reads, typename Sink>
         _mm256_and_ps(_mm256_cmp_ps(b, zero, _CMP_GE_OQ), _mm256_cmp_ps(w, zero, _CMP_GE_OQ)));
     F m[3], tu = zero, tv = zero;
     for (int k = 0; k < 3; ++k) m[k] = at(normal[k], sx);
-    if (face.textured) {
+    if (face.textured()) {
       const F inv = _mm256_div_ps(one, d);
       tu = _mm256_mul_ps(at(uv[0], sx), inv);
       tv = _mm256_mul_ps(at(uv[1], sx), inv);
@@ -279,7 +280,7 @@ template <TexelReads reads, typename Sink>
       }
       const F light = _mm256_fmadd_ps(splat(0.9f), diffuse, splat(0.1f));
       F base[3] = {splat(face.base[0]), splat(face.base[1]), splat(face.base[2])};
-      if (face.textured) sampleTexture<reads>(face, tu, tv, base);
+      if (face.textured()) sampleTexture<reads>(texture, tu, tv, base);
       for (int k = 0; k < 3; ++k) t[k] = _mm256_fmadd_ps(base[k], light, shine);
     }
     const I rgb = _mm256_or_si256(

@@ -85,19 +85,19 @@ constexpr float kTopChannel = 255.5f;
 }
 
 // The texture, bilinear, wrapping, at (u, v) (v = 0 is the bottom row); RGB in 0..255. Thanks
-// to the frame of copied texels (FaceSurface) the four texels are (x0, y0) to (x0 + 1,
+// to the frame of copied texels (SurfaceTexture) the four texels are (x0, y0) to (x0 + 1,
 // y0 + 1) with x0 in [-1, width - 1] and y0 in [-1, height - 1], no wrapping needed.
-[[gnu::always_inline]] inline void sampleTexture(const FaceSurface& f, float u, float v,
+[[gnu::always_inline]] inline void sampleTexture(const SurfaceTexture& t, float u, float v,
                                                  float rgb[3]) {
   // In [0, 1]; NaN (from an infinite u) to 0.
   const float uu = maxOf(u - std::floor(u), 0.0f), vv = maxOf(v - std::floor(v), 0.0f);
-  const float tx = std::fma(uu, float(f.textureWidth), -0.5f);
-  const float ty = std::fma(vv, -float(f.textureHeight), float(f.textureHeight) - 0.5f);
+  const float tx = std::fma(uu, float(t.width), -0.5f);
+  const float ty = std::fma(vv, -float(t.height), float(t.height) - 0.5f);
   const float fx0 = std::floor(tx), fy0 = std::floor(ty);
   const float fx = tx - fx0, fy = ty - fy0;
-  const int stride = f.textureWidth + 2;
+  const int stride = t.width + 2;
   const uint32_t* row0 =
-      f.texels + (int(truncateToInt(fy0)) * stride + int(truncateToInt(fx0)) + (stride + 1));
+      t.texels + (int(truncateToInt(fy0)) * stride + int(truncateToInt(fx0)) + (stride + 1));
   const uint32_t* row1 = row0 + stride;
   for (int i = 0; i < 3; ++i) {
     const int shift = 16 - 8 * i;  // R, G, B
@@ -166,7 +166,7 @@ constexpr float kTopChannel = 255.5f;
     // Ambient 0.1, diffuse 0.9.
     const float light = std::fma(0.9f, diffuse, 0.1f);
     float base[3] = {face.base[0], face.base[1], face.base[2]};
-    if (face.textured) sampleTexture(face, uv[0], uv[1], base);
+    if (face.textured()) sampleTexture(f.textures[face.texture], uv[0], uv[1], base);
     for (int i = 0; i < 3; ++i) t[i] = std::fma(base[i], light, shine);
   }
   return truncateToInt(minOf(t[0], kTopChannel)) << 16 |

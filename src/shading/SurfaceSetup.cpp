@@ -75,7 +75,7 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
   textures_.resize(distinct.size());
   for (size_t i = 0; i < distinct.size(); ++i) {
     // Framed by a copy of the last column and row before the first and of the first after the
-    // last (FaceSurface), so that bilinear filtering reads texel pairs without wrapping.
+    // last (SurfaceTexture), so that bilinear filtering reads texel pairs without wrapping.
     const cv::Mat& t = *distinct[i];
     const int rows = t.rows, cols = t.cols;
     const int stride = cols + 2;
@@ -93,6 +93,7 @@ SurfaceSetup::SurfaceSetup(const Scene& scene, ShadingMode mode) : scene_(scene)
       for (int x = 0; x < cols; ++x) line[x + 1] = texel(row + 3 * x);
       line[cols + 1] = texel(row);
     }
+    textureViews_.push_back(SurfaceTexture{out.texels.data(), cols, rows});
   }
   frame_.mode = mode;
 }
@@ -122,6 +123,7 @@ void SurfaceSetup::begin(const std::vector<Mat4>& modelView, const Camera& camer
   frame_.rayOriginY = float(rayOriginY_ - 0.5 * rayScaleY_);
   frame_.rayScaleX = float(rayScaleX_);
   frame_.rayScaleY = float(rayScaleY_);
+  frame_.textures = textureViews_.data();
 }
 
 bool SurfaceSetup::setUpFaces(const FaceParts& parts, size_t samples, const Threads* threads) {
@@ -262,13 +264,7 @@ FaceSurface SurfaceSetup::faceFields(const FaceRef& ref) const {
   const int32_t textureIndex = data.allUvs && instanceTextures_[ref.instance] >= 0
                                    ? instanceTextures_[ref.instance]
                                    : data.texture;
-  if (textureIndex >= 0) {
-    const Texture& t = textures_[size_t(textureIndex)];
-    face.textured = true;
-    face.texels = t.texels.data();
-    face.textureWidth = t.width;
-    face.textureHeight = t.height;
-  }
+  face.texture = textureIndex;
   return face;
 }
 

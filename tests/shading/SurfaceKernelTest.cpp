@@ -78,7 +78,7 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
   if (versions.empty()) GTEST_SKIP() << "this CPU has no AVX2";
   std::mt19937 rng(2026);
   std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  // A 5 x 3 texture stored as FaceSurface says: framed by a copy of the last column and row
+  // A 5 x 3 texture stored as SurfaceTexture says: framed by a copy of the last column and row
   // before the first and of the first after the last.
   const int tw = 5, th = 3;
   std::vector<uint32_t> texture(size_t(tw) * th);
@@ -88,6 +88,7 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
     for (int x = 0; x < tw + 2; ++x)
       texels[size_t(y) * (tw + 2) + x] =
           texture[size_t((y + th - 1) % th) * tw + (x + tw - 1) % tw];
+  const SurfaceTexture framed{texels.data(), tw, th};
 
   int outside = 0, inside = 0;
   for (int trial = 0; trial < 20000; ++trial) {
@@ -98,14 +99,12 @@ TEST(SurfaceKernel, VectorRunsGiveTheScalarBitsOnRandomFaces) {
     frame.rayOriginY = 1.0f - 0.2f * unit(rng);
     frame.rayScaleX = 0.004f * unit(rng);
     frame.rayScaleY = 0.004f * unit(rng);
+    frame.textures = &framed;
     FaceSurface face;
-    face.texels = texels.data();
-    face.textureWidth = tw;
-    face.textureHeight = th;
     face.originX = int(rng() % 500);
     face.originY = int(rng() % 500);
     face.fanCount = 1;
-    face.textured = frame.mode == ShadingMode::Texture && rng() % 4 != 0;
+    face.texture = frame.mode == ShadingMode::Texture && rng() % 4 != 0 ? 0 : -1;
     for (float& c : face.base) c = 255.0f * unit(rng);
     SurfaceFan fan{};
     // Mostly a face whose weights are those of a triangle around the origin, so that runs

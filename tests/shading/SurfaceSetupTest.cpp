@@ -36,11 +36,8 @@ void expectSameSurface(const FaceSurface& a, const SurfaceFan* aFans, const Face
   ASSERT_EQ(a.fanCount, b.fanCount) << label;
   EXPECT_EQ(a.originX, b.originX) << label;
   EXPECT_EQ(a.originY, b.originY) << label;
-  EXPECT_EQ(a.textured, b.textured) << label;
-  // Each SurfaceSetup frames its own copy of a texture: its size, not its address.
-  EXPECT_EQ(a.texels == nullptr, b.texels == nullptr) << label;
-  EXPECT_EQ(a.textureWidth, b.textureWidth) << label;
-  EXPECT_EQ(a.textureHeight, b.textureHeight) << label;
+  // Each SurfaceSetup frames its own copies of the scene's textures, in the same order.
+  EXPECT_EQ(a.texture, b.texture) << label;
   for (int i = 0; i < 3; ++i) EXPECT_EQ(bitsOf(a.base[i]), bitsOf(b.base[i])) << label;
   for (uint32_t j = 0; j < a.fanCount; ++j) {
     const SurfaceFan& x = aFans[j];

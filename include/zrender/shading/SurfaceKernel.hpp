@@ -47,17 +47,25 @@ struct SurfaceFan {
   bool degenerate;           // zero area: corner 0's attributes everywhere
 };
 
-// What a face shares over its samples.
+// A texture as the samples read it: 0x00RRGGBB, row 0 at the top (v = 1), framed by a copy of
+// its last column and row before the first and of its first after the last: (width + 2) x
+// (height + 2) texels, texel (x, y) at (y + 1) (width + 2) + x + 1.
+struct SurfaceTexture {
+  const uint32_t* texels = nullptr;
+  int width = 0, height = 0;
+};
+
+// What a face shares over its samples. 32 bytes, so that a triangle's record (its surface and
+// its fan, SurfaceSetup) is three cache lines: the set-up writes every face's record and the rows
+// read it, and the records' bytes weigh on both (docs/performance.md, Shading).
 struct FaceSurface {
   int32_t originX = 0, originY = 0;  // samples: where its planes are evaluated from
   uint32_t firstFan = 0, fanCount = 0;
   float base[3] = {204.0f, 204.0f, 204.0f};  // diffuse RGB, 0..255 (material Kd times 255)
-  bool textured = false;                     // base color from the texture at the sample's uv
-  // Its texture, 0x00RRGGBB, row 0 at the top (v = 1), framed by a copy of its last column
-  // and row before the first and of its first after the last: (textureWidth + 2) x
-  // (textureHeight + 2) texels, texel (x, y) at (y + 1) (textureWidth + 2) + x + 1.
-  const uint32_t* texels = nullptr;
-  int textureWidth = 0, textureHeight = 0;
+  // Its texture, SurfaceFrame::textures[texture], whose color at the sample's uv takes the
+  // place of `base`; -1: none.
+  int32_t texture = -1;
+  bool textured() const { return texture >= 0; }
 };
 
 // What every sample of a frame shares.
@@ -66,6 +74,7 @@ struct SurfaceFrame {
   // The view-space ray through the centre of sample (x, y) is (fma(x, rayScaleX, rayOriginX),
   // fma(y, -rayScaleY, rayOriginY), -1).
   float rayOriginX = 0.0f, rayOriginY = 0.0f, rayScaleX = 0.0f, rayScaleY = 0.0f;
+  const SurfaceTexture* textures = nullptr;  // the faces' textures (FaceSurface::texture)
 };
 
 // Colors samples [x, x + count) of row y, all covered by the face `face` (whose fans are

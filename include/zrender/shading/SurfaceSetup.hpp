@@ -86,6 +86,7 @@ class SurfaceSetup {
     };
     SurfaceRecord() {}
   };
+  static_assert(sizeof(SurfaceRecord) == 192, "a record is three cache lines");
   struct Scratch {
     std::vector<Vec3> position, normal;  // one face's corners, view space
   };
@@ -138,7 +139,8 @@ class SurfaceSetup {
     int width = 0, height = 0;
   };
   std::vector<Texture> textures_;
-  std::vector<int32_t> instanceTextures_;  // per instance: its object's texture, else -1
+  std::vector<SurfaceTexture> textureViews_;  // textures_ as SurfaceFrame::textures reads them
+  std::vector<int32_t> instanceTextures_;     // per instance: its object's texture, else -1
 
   // Per frame.
   const std::vector<Mat4>* modelView_ = nullptr;
