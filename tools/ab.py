@@ -123,9 +123,9 @@ def main():
         fail("no zrender arguments after --")
     # What runs in each round, in order: a binary with a variant's arguments (label, argv).
     variants = [(v, shlex.split(v)) for v in options.variant] or [("", [])]
-    runs = [(f"{b} {v}".strip(), b, extra) for b in options.binaries for v, extra in variants]
     labels = {(b, v): f"{b} {v}".strip() for b in options.binaries for v, _ in variants}
     variant_of = {label: v for (b, v), label in labels.items()}
+    runs = [(labels[(b, v)], b, extra) for b in options.binaries for v, extra in variants]
 
     busy_rounds = 0
     if options.wall:

@@ -52,7 +52,7 @@ TEST(Plugin, APluginWithoutATagIsRefusedByName) {
 }
 
 TEST(Plugin, AMissingPluginSaysWhereItWasLookedFor) {
-  const fs::path folder = fs::read_symlink("/proc/self/exe").parent_path();
+  const fs::path folder = testFolder();
   EXPECT_EQ(loadError("libzrender_nowhere.so"),
             "cannot load libzrender_nowhere.so: not found in " +
                 (folder.parent_path() / "lib" / "zrender").string() + " nor beside " +
