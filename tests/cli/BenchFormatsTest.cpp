@@ -11,9 +11,8 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "support/CommandLineRuns.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 
 namespace zrender {
@@ -179,7 +178,7 @@ TEST(BenchFormats, TheChartHasOneLogAxisForAllScenes) {
   const auto png = runZrender(
       {"bench-report", s.dir.file("b.json"), "--chart", s.dir.file("c.png")}, s.dir.path);
   ASSERT_EQ(png.status, 0) << png.err;
-  EXPECT_FALSE(cv::imread(s.dir.file("c.png")).empty());
+  EXPECT_FALSE(test::imread(s.dir.file("c.png")).empty());
   test::expectCleanError(
       runZrender({"bench-report", s.dir.file("b.json"), "--chart", s.dir.file("c.gif")},
                  s.dir.path),

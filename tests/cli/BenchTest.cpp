@@ -10,9 +10,8 @@
 #include <fstream>
 #include <string>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "support/CommandLineRuns.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
@@ -61,7 +60,7 @@ TEST(Bench, PrintsAVerifiedTableAndWritesItsFiles) {
   EXPECT_EQ(r.out.find("**NO**"), std::string::npos);
   EXPECT_NE(r.err.find("all identical to zbuffer"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir.file("t.md")));
-  EXPECT_FALSE(cv::imread(dir.file("c.png")).empty());
+  EXPECT_FALSE(test::imread(dir.file("c.png")).empty());
   std::ifstream json(dir.file("t.json"));
   Json::Value results;
   json >> results;

@@ -10,10 +10,10 @@
 #include <set>
 #include <string>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "support/CommandLineRuns.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 
 namespace zrender {
@@ -35,7 +35,7 @@ TEST(CommandLine, RendersTheDefaultOutputName) {
   const auto r = runZrender({"sq"}, dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(test::beyondSummary(r.err), "");
-  const cv::Mat image = cv::imread(dir.file("sq.png"));
+  const cv::Mat image = test::imread(dir.file("sq.png"));
   ASSERT_FALSE(image.empty());
   EXPECT_EQ(image.cols, 32);
   // The square spans the middle half of the image: normal color (128, 128, 255) there.
@@ -51,7 +51,7 @@ TEST(CommandLine, ModelFileAsSceneUsesFit) {
   const auto r = runZrender(
       {model, "-o", dir.file("out/thing.png"), "--width", "20", "--height", "10"}, dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  const cv::Mat image = cv::imread(dir.file("out/thing.png"));  // parent folder created
+  const cv::Mat image = test::imread(dir.file("out/thing.png"));  // parent folder created
   ASSERT_EQ(image.rows, 10);
   EXPECT_EQ(image.at<cv::Vec3b>(5, 10), cv::Vec3b(255, 128, 128));  // centred
 }
@@ -113,12 +113,12 @@ TEST(CommandLine, DepthAndIdOutputs) {
       {"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.tif"), "--ids", dir.file("i.png")},
       dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  const cv::Mat depth = cv::imread(dir.file("d.tif"), cv::IMREAD_UNCHANGED);
+  const cv::Mat depth = test::imread(dir.file("d.tif"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(depth.type(), CV_32FC1);
   EXPECT_EQ(depth.at<float>(0, 0), 1.0f);
   EXPECT_GT(depth.at<float>(16, 16), 0.0f);
   EXPECT_LT(depth.at<float>(16, 16), 1.0f);
-  const cv::Mat ids = cv::imread(dir.file("i.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat ids = test::imread(dir.file("i.png"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(ids.type(), CV_8UC3);
   // The diagonal runs from bottom-left to top-right: the upper-left half is face 1 (f 1 3 4),
   // the lower-right half face 0; the image holds id + 1 in red.
@@ -129,7 +129,7 @@ TEST(CommandLine, DepthAndIdOutputs) {
   const auto r16 =
       runZrender({"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.png")}, dir.path);
   ASSERT_EQ(r16.status, 0) << r16.err;
-  const cv::Mat depth16 = cv::imread(dir.file("d.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat depth16 = test::imread(dir.file("d.png"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(depth16.type(), CV_16UC1);
   EXPECT_EQ(depth16.at<uint16_t>(0, 0), 65535);
   EXPECT_EQ(depth16.at<uint16_t>(16, 16), uint16_t(std::lround(depth.at<float>(16, 16) * 65535.0)));
@@ -144,8 +144,8 @@ TEST(CommandLine, DepthAndIdOutputs) {
                  dir.path)
           .status,
       0);
-  const cv::Mat t32 = cv::imread(dir.file("t.tif"), cv::IMREAD_UNCHANGED);
-  const cv::Mat t16 = cv::imread(dir.file("t.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat t32 = test::imread(dir.file("t.tif"), cv::IMREAD_UNCHANGED);
+  const cv::Mat t16 = test::imread(dir.file("t.png"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(t32.type(), CV_32FC1);
   ASSERT_EQ(t16.type(), CV_16UC1);
   std::set<float> depths;
@@ -226,8 +226,8 @@ TEST(CommandLine, MsaaDepthAndIdsHoldTheNearestSample) {
       {"sq", "-o", dir.file("c.png"), "--depth", dir.file("d.tif"), "--ids", dir.file("i.png")},
       dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  const cv::Mat ids = cv::imread(dir.file("i.png"), cv::IMREAD_UNCHANGED);
-  const cv::Mat depth = cv::imread(dir.file("d.tif"), cv::IMREAD_UNCHANGED);
+  const cv::Mat ids = test::imread(dir.file("i.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat depth = test::imread(dir.file("d.tif"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(ids.type(), CV_8UC3);
   ASSERT_EQ(depth.type(), CV_32FC1);
   const auto id = [&](int x, int y) { return int(ids.at<cv::Vec3b>(y, x)[2]) - 1; };
@@ -259,7 +259,7 @@ TEST(CommandLine, CullTurnsCullingBackOnForASceneWithout) {
     const auto r = runZrender(args, dir.path);
     EXPECT_EQ(r.status, 0) << r.err;
     cv::Mat gray;
-    cv::cvtColor(cv::imread(dir.file("back.png")), gray, cv::COLOR_BGR2GRAY);
+    cv::cvtColor(test::imread(dir.file("back.png")), gray, cv::COLOR_BGR2GRAY);
     return cv::countNonZero(gray);
   };
   EXPECT_EQ(count({}), 256);

@@ -7,14 +7,13 @@
 #include <gtest/gtest.h>
 #include <json/json.h>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "support/CommandLineRuns.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 
 namespace zrender {
@@ -65,7 +64,7 @@ std::string differsLine(const std::string& out, const std::string& ref, int pixe
 
 // Expects `diff` to be a 32 x 32 8-bit BGR image, pure red exactly at (x, y).
 void expectRedOnlyAt(const std::string& path, int x, int y) {
-  const cv::Mat diff = cv::imread(path, cv::IMREAD_UNCHANGED);
+  const cv::Mat diff = test::imread(path, cv::IMREAD_UNCHANGED);
   ASSERT_EQ(diff.type(), CV_8UC3) << path;
   ASSERT_EQ(diff.size(), cv::Size(kSize, kSize)) << path;
   for (int row = 0; row < kSize; ++row) {
@@ -90,14 +89,14 @@ TEST(ReferenceImages, TheSameRenderPasses) {
 TEST(ReferenceImages, OnePixelOffByThreeFailsAndIsMarked) {
   SquareScene s;
   ASSERT_EQ(s.run({"-o", "ref.png", "-q"}).status, 0);
-  cv::Mat ref = cv::imread(s.dir.file("ref.png"));
+  cv::Mat ref = test::imread(s.dir.file("ref.png"));
   ASSERT_EQ(ref.size(), cv::Size(kSize, kSize));
   const int x = 16, y = 17;  // inside the square: the diff's context is not black there
   const cv::Vec3b square = ref.at<cv::Vec3b>(y, x);
   ASSERT_NE(square, cv::Vec3b(0, 0, 0));
   ASSERT_LE(square[1], 252);
   ref.at<cv::Vec3b>(y, x)[1] += 3;
-  ASSERT_TRUE(cv::imwrite(s.dir.file("changed.png"), ref));
+  ASSERT_TRUE(test::imwrite(s.dir.file("changed.png"), ref));
 
   const auto r = s.run({"-o", "out.png", "--reference", "changed.png"});
   EXPECT_EQ(r.status, 3) << r.err;
@@ -105,7 +104,7 @@ TEST(ReferenceImages, OnePixelOffByThreeFailsAndIsMarked) {
             differsLine("out.png", "changed.png", 1, "3", "out-diff.png"));
   expectRedOnlyAt(s.dir.file("out-diff.png"), x, y);
   // Elsewhere the diff shows the render at a quarter of its brightness.
-  const cv::Mat diff = cv::imread(s.dir.file("out-diff.png"));
+  const cv::Mat diff = test::imread(s.dir.file("out-diff.png"));
   EXPECT_EQ(diff.at<cv::Vec3b>(y, x + 1), cv::Vec3b(square[0] / 4, square[1] / 4, square[2] / 4));
   EXPECT_EQ(diff.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 0));  // the black background
 
@@ -130,10 +129,10 @@ TEST(ReferenceImages, OnePixelOffByThreeFailsAndIsMarked) {
 TEST(ReferenceImages, JsonHoldsTheComparison) {
   SquareScene s;
   ASSERT_EQ(s.run({"-o", "ref.png", "-q"}).status, 0);
-  cv::Mat ref = cv::imread(s.dir.file("ref.png"));
+  cv::Mat ref = test::imread(s.dir.file("ref.png"));
   ref.at<cv::Vec3b>(2, 3) = cv::Vec3b(0, 0, 200);  // background (0, 0, 0): 200 off in red
   ref.at<cv::Vec3b>(3, 3) = cv::Vec3b(9, 0, 0);
-  ASSERT_TRUE(cv::imwrite(s.dir.file("changed.png"), ref));
+  ASSERT_TRUE(test::imwrite(s.dir.file("changed.png"), ref));
   const auto r = s.run({"-o", "out.png", "--reference", "changed.png", "--json"});
   EXPECT_EQ(r.status, 3) << r.err;
   const Json::Value j = parseJson(r.out);
@@ -226,7 +225,7 @@ TEST(ReferenceImages, OptionsThatCannotGoTogether) {
 // A depth image's one value changed by `change`, written as `changedName`.
 void writeChangedDepth(const SquareScene& s, const std::string& from,
                        const std::string& changedName, int x, int y, double change) {
-  cv::Mat depth = cv::imread(s.dir.file(from), cv::IMREAD_UNCHANGED);
+  cv::Mat depth = test::imread(s.dir.file(from), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(depth.size(), cv::Size(kSize, kSize)) << from;
   if (depth.type() == CV_32FC1)
     depth.at<float>(y, x) = float(depth.at<float>(y, x) + change);
@@ -234,7 +233,7 @@ void writeChangedDepth(const SquareScene& s, const std::string& from,
     depth.at<uint16_t>(y, x) = uint16_t(depth.at<uint16_t>(y, x) + change);
   else
     FAIL() << from << ": type " << depth.type();
-  ASSERT_TRUE(cv::imwrite(s.dir.file(changedName), depth));
+  ASSERT_TRUE(test::imwrite(s.dir.file(changedName), depth));
 }
 
 TEST(ReferenceImages, FloatAnd16BitDepthReferences) {  // and OpenEXR
@@ -265,9 +264,9 @@ TEST(ReferenceImages, FloatAnd16BitDepthReferences) {  // and OpenEXR
     fs::remove(s.dir.file("d-diff.png"));
   }
   // The float depth as OpenEXR (written here, the values of ref.tif): the same floats.
-  const cv::Mat floats = cv::imread(s.dir.file("ref.tif"), cv::IMREAD_UNCHANGED);
+  const cv::Mat floats = test::imread(s.dir.file("ref.tif"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(floats.type(), CV_32FC1);
-  ASSERT_TRUE(cv::imwrite(s.dir.file("ref.exr"), floats));
+  ASSERT_TRUE(test::imwrite(s.dir.file("ref.exr"), floats));
   const auto exr = s.run({"-o", "c.png", "--depth", "d.tif", "--reference-depth", "ref.exr"});
   EXPECT_EQ(exr.status, 0) << exr.err;
   EXPECT_EQ(test::beyondSummary(exr.err), "");
@@ -288,11 +287,11 @@ TEST(ReferenceImages, IdsReference) {
   EXPECT_EQ(test::beyondSummary(same.err), "");
 
   // Face 1 (id 2 in the image) where face 0 (id 1) is: a difference of 1 in red, the low byte.
-  cv::Mat ids = cv::imread(s.dir.file("ref-ids.png"));
+  cv::Mat ids = test::imread(s.dir.file("ref-ids.png"));
   const int x = 20, y = 20;  // lower right of the square's middle: face 0
   ASSERT_EQ(ids.at<cv::Vec3b>(y, x), cv::Vec3b(0, 0, 1));
   ids.at<cv::Vec3b>(y, x) = cv::Vec3b(0, 0, 2);
-  ASSERT_TRUE(cv::imwrite(s.dir.file("changed-ids.png"), ids));
+  ASSERT_TRUE(test::imwrite(s.dir.file("changed-ids.png"), ids));
   const auto r = s.run({"-o", "c.png", "--ids", "ids.png", "--reference-ids", "changed-ids.png"});
   EXPECT_EQ(r.status, 3) << r.err;
   EXPECT_EQ(test::beyondSummary(r.err),

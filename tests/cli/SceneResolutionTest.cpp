@@ -14,9 +14,8 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "support/SettingsParsing.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/cli/SceneResolution.hpp"
 
@@ -161,7 +160,7 @@ TEST(SceneResolution, ASquareIsAsTallAsWithTheSameCameraInASettingsFile) {
       dir.path);
   ASSERT_EQ(fromOptions.status, 0) << fromOptions.err;
   EXPECT_EQ(test::beyondSummary(fromOptions.err), "");
-  const cv::Mat a = cv::imread(dir.file("a.png")), b = cv::imread(dir.file("b.png"));
+  const cv::Mat a = test::imread(dir.file("a.png")), b = test::imread(dir.file("b.png"));
   ASSERT_FALSE(a.empty());
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
@@ -184,7 +183,7 @@ TEST(SceneResolution, FitOnTheCommandLineFramesTheModelAsASettingsSceneWithFit) 
                                    "--height", "30", "--shading", "id", "-o", dir.file("b.png")},
                                   dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  const cv::Mat a = cv::imread(dir.file("a.png")), b = cv::imread(dir.file("b.png"));
+  const cv::Mat a = test::imread(dir.file("a.png")), b = test::imread(dir.file("b.png"));
   ASSERT_FALSE(a.empty());
   ASSERT_EQ(a.size(), b.size());
   EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
@@ -194,7 +193,7 @@ TEST(SceneResolution, FitOnTheCommandLineFramesTheModelAsASettingsSceneWithFit) 
                              dir.path)
                 .status,
             0);
-  EXPECT_GT(cv::norm(a, cv::imread(dir.file("c.png")), cv::NORM_INF), 0.0);
+  EXPECT_GT(cv::norm(a, test::imread(dir.file("c.png")), cv::NORM_INF), 0.0);
 }
 
 TEST(SceneResolution, NoFitUsesTheCameraAsGivenAndNeedsAnEye) {
@@ -209,7 +208,7 @@ TEST(SceneResolution, NoFitUsesTheCameraAsGivenAndNeedsAnEye) {
                         "--height", "32", "--shading", "id", "-o", dir.file("b.png")},
                        dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  const cv::Mat a = cv::imread(dir.file("a.png")), b = cv::imread(dir.file("b.png"));
+  const cv::Mat a = test::imread(dir.file("a.png")), b = test::imread(dir.file("b.png"));
   ASSERT_FALSE(b.empty());
   EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
 

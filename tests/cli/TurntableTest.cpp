@@ -9,11 +9,10 @@
 #include <iterator>
 #include <string>
 
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
-#include <opencv2/videoio.hpp>
 
 #include "support/CommandLineRuns.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 
 namespace zrender {
@@ -38,13 +37,13 @@ TEST(Turntable, WritesEveryFrameAndAContactSheet) {
   for (int i = 0; i < 4; ++i) EXPECT_TRUE(fs::exists(dir.file("f/0" + std::to_string(i) + ".png")));
   // Frame 1 is a quarter turn about the vertical axis: the square is seen edge-on, so
   // (almost) nothing is drawn, while frame 0 shows it whole; frame 2 shows its back.
-  const cv::Mat f0 = cv::imread(dir.file("f/00.png")), f1 = cv::imread(dir.file("f/01.png"));
+  const cv::Mat f0 = test::imread(dir.file("f/00.png")), f1 = test::imread(dir.file("f/01.png"));
   cv::Mat gray0, gray1;
   cv::cvtColor(f0, gray0, cv::COLOR_BGR2GRAY);
   cv::cvtColor(f1, gray1, cv::COLOR_BGR2GRAY);
   EXPECT_EQ(cv::countNonZero(gray0), 256);
   EXPECT_LT(cv::countNonZero(gray1), 40);
-  const cv::Mat sheet = cv::imread(dir.file("sheet.png"));
+  const cv::Mat sheet = test::imread(dir.file("sheet.png"));
   EXPECT_EQ(sheet.cols, 64);  // 2 x 2 tiles of 32 x 32
   EXPECT_EQ(sheet.rows, 64);
 }
@@ -55,9 +54,7 @@ TEST(Turntable, WritesAVideo) {
   dir.write("settings.json", settingsFor("sq.obj"));
   const auto r = runZrender({"sq", "--turntable", "6", "-o", dir.file("spin.avi")}, dir.path);
   ASSERT_EQ(r.status, 0) << r.err;
-  cv::VideoCapture video(dir.file("spin.avi"));
-  ASSERT_TRUE(video.isOpened());
-  EXPECT_EQ(int(video.get(cv::CAP_PROP_FRAME_COUNT)), 6);
+  EXPECT_EQ(test::videoFrameCount(dir.file("spin.avi")), 6);
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 3);
 }
 

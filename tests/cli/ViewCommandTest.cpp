@@ -12,9 +12,8 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "support/CommandLineRuns.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "support/VirtualDisplay.hpp"
 
@@ -112,7 +111,7 @@ TEST(ViewCommand, TheLastFrameSavedIsWhatTheRenderCommandWrites) {
   const std::string saved = readFile(out.file("last.png"));
   EXPECT_FALSE(saved.empty());
   EXPECT_TRUE(saved == readFile(out.file("render.png"))) << "not byte for byte the same";
-  const cv::Mat image = cv::imread(out.file("last.png"));
+  const cv::Mat image = test::imread(out.file("last.png"));
   EXPECT_GT(cv::countNonZero(image.reshape(1)), 2000) << "no teapot";
 }
 
@@ -143,7 +142,7 @@ TEST(ViewCommand, AContactSheetOfTheFramesShownAndTheFiguresPrinted) {
   ASSERT_EQ(r.status, 0) << r.err;
   // The frames on screen at the three keys that changed something, and the last: 2 x 2 tiles
   // of 32 x 32 (a fifth would make it 3 x 2).
-  const cv::Mat sheet = cv::imread(sq.dir.file("sheet.png"));
+  const cv::Mat sheet = test::imread(sq.dir.file("sheet.png"));
   EXPECT_EQ(sheet.cols, 64);
   EXPECT_EQ(sheet.rows, 64);
   // The last tile is the last frame, overlay included: not black below it.

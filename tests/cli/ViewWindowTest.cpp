@@ -10,8 +10,7 @@
 #include <string>
 #include <thread>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "support/VirtualDisplay.hpp"
 #include "support/XwdImage.hpp"
@@ -76,7 +75,7 @@ TEST(ViewWindow, ShowsTheModelWithTheOverlayAndAnswersKeys) {
        {"key 'p': orbit paused\n", "key 'space': algorithm scanline\n", "key 'q': quit\n"})
     EXPECT_NE(r.out.find(said), std::string::npos) << said << " in\n" << r.out;
 
-  const cv::Mat shot = test::readXwd(shotPath), last = cv::imread(out.file("last.png"));
+  const cv::Mat shot = test::readXwd(shotPath), last = test::imread(out.file("last.png"));
   ASSERT_FALSE(shot.empty()) << "no screenshot";
   ASSERT_EQ(last.size(), cv::Size(320, 240));
   EXPECT_GT(cv::countNonZero(last.reshape(1)), 5000) << "no teapot";

@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 #include <json/json.h>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -17,6 +15,7 @@
 #include <vector>
 
 #include "support/CommandLineRuns.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 
 namespace zrender {
@@ -246,8 +245,8 @@ TEST(ViewsRun, TheManifestsCamerasProjectEachVisibleVertexOntoAFaceThatUsesIt) {
     SCOPED_TRACE("view " + std::to_string(k));
     const Json::Value& frame = manifest["frames"][k];
     EXPECT_EQ(frame["file_path"].asString(), std::to_string(k) + ".png");
-    const cv::Mat ids = cv::imread(dir.file("v/" + frame["zrender"]["ids_file_path"].asString()),
-                                   cv::IMREAD_UNCHANGED);
+    const cv::Mat ids = test::imread(dir.file("v/" + frame["zrender"]["ids_file_path"].asString()),
+                                     cv::IMREAD_UNCHANGED);
     ASSERT_EQ(ids.cols, w);
     // The eye in world space: the camera-to-world matrix's translation.
     const Json::Value& m = frame["transform_matrix"];
@@ -303,10 +302,10 @@ TEST(ViewsRun, NormalsAreTheNormalModesWithinARounding) {
     ASSERT_EQ(runZrender(args, dir.path).status, 0);
     args.back() = "n16.png";
     ASSERT_EQ(runZrender(args, dir.path).status, 0);
-    const cv::Mat sixteen = cv::imread(dir.file("n16.png"), cv::IMREAD_UNCHANGED);
+    const cv::Mat sixteen = test::imread(dir.file("n16.png"), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(sixteen.type(), CV_16UC3);
-    const cv::Mat color = cv::imread(dir.file("n.png"));
-    const cv::Mat normals = cv::imread(dir.file("n.exr"), cv::IMREAD_UNCHANGED);
+    const cv::Mat color = test::imread(dir.file("n.png"));
+    const cv::Mat normals = test::imread(dir.file("n.exr"), cv::IMREAD_UNCHANGED);
     ASSERT_EQ(normals.type(), CV_32FC3);
     ASSERT_EQ(normals.size(), color.size());
     int covered = 0;
@@ -337,7 +336,7 @@ TEST(ViewsRun, SixteenBitNormalsOfASquareFacingTheEye) {
   dir.write("sq.obj", test::kSquareObj);
   dir.write("settings.json", test::settingsFor("sq.obj"));
   ASSERT_EQ(runZrender({"sq", "--normals", "n.png", "-q"}, dir.path).status, 0);
-  const cv::Mat n = cv::imread(dir.file("n.png"), cv::IMREAD_UNCHANGED);
+  const cv::Mat n = test::imread(dir.file("n.png"), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(n.type(), CV_16UC3);
   // The square spans the middle half of the 32 x 32 image: (0, 0, 1) there, 0 elsewhere.
   using Pixel16 = cv::Vec<uint16_t, 3>;

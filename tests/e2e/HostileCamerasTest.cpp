@@ -10,8 +10,6 @@
 #include <utility>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "support/HostileRuns.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 

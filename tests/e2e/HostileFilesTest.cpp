@@ -11,9 +11,8 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "support/HostileRuns.hpp"
+#include "support/TestImages.hpp"
 #include "zrender/io/obj/ObjLoader.hpp"
 #include "zrender/visibility/VisibilityAlgorithm.hpp"
 
@@ -132,7 +131,7 @@ TEST(HostileFiles, FacesWithOneOrTwoVerticesAreSkipped) {
     dir.write("m.obj", model);
     const Outcome r = renderModel(dir, algorithm, {"--ids", "ids.png"});
     expectPicture(r, dir.file("out.png"), kImageSize, kImageSize);
-    const cv::Mat ids = cv::imread(dir.file("ids.png"), cv::IMREAD_COLOR);
+    const cv::Mat ids = test::imread(dir.file("ids.png"), cv::IMREAD_COLOR);
     ASSERT_FALSE(ids.empty());
     EXPECT_EQ(ids.at<cv::Vec3b>(kImageSize / 2, kImageSize / 2),
               cv::Vec3b(0, 0, 3));  // BGR: red = 3

@@ -13,9 +13,8 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "support/HostileRuns.hpp"
+#include "support/TestImages.hpp"
 #include "zrender/base/Error.hpp"
 
 namespace zrender {
@@ -66,7 +65,7 @@ TEST(NothingLost, PlantedLinksAreNeverWrittenThrough) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(readFile(dir.file("victim")), "precious\n");
   EXPECT_FALSE(fs::is_symlink(dir.file("out.png")));  // replaced, not written through
-  EXPECT_FALSE(cv::imread(dir.file("out.png")).empty());
+  EXPECT_FALSE(test::imread(dir.file("out.png")).empty());
   for (const std::string& name : hiddenEntries(dir.path))
     EXPECT_TRUE(fs::is_symlink(dir.file(name))) << name;  // only the planted links
 }
@@ -185,7 +184,7 @@ TEST(NothingLost, ModelReadsAreBounded) {
 // A PNG of 1 x 1 pixel whose header says width x height.
 std::string pngClaiming(uint32_t width, uint32_t height) {
   std::vector<uchar> bytes;
-  cv::imencode(".png", cv::Mat(1, 1, CV_8UC3, cv::Scalar(1, 2, 3)), bytes);
+  test::imencode(".png", cv::Mat(1, 1, CV_8UC3, cv::Scalar(1, 2, 3)), bytes);
   const auto put = [&](size_t at, uint32_t v) {
     for (int i = 0; i < 4; ++i) bytes[at + size_t(i)] = uchar(v >> (24 - 8 * i));
   };
@@ -202,7 +201,7 @@ std::string pngClaiming(uint32_t width, uint32_t height) {
 // A JPEG of 8 x 8 pixels whose frame header says width x height.
 std::string jpegClaiming(uint16_t width, uint16_t height) {
   std::vector<uchar> bytes;
-  cv::imencode(".jpg", cv::Mat(8, 8, CV_8UC3, cv::Scalar(1, 2, 3)), bytes);
+  test::imencode(".jpg", cv::Mat(8, 8, CV_8UC3, cv::Scalar(1, 2, 3)), bytes);
   for (size_t i = 2; i + 9 < bytes.size(); ++i) {
     if (bytes[i] == 0xFF && bytes[i + 1] == 0xC0) {  // SOF0: length, precision, height, width
       bytes[i + 5] = uchar(height >> 8), bytes[i + 6] = uchar(height);
@@ -268,7 +267,7 @@ TEST(NothingLost, InterruptedRunsLeaveNoPartialFiles) {
       EXPECT_TRUE(hiddenEntries(dir.file(folder)).empty());
       for (const std::string& name : listFolder(dir.file(folder))) {
         EXPECT_EQ(name.rfind("f", 0), 0u) << name;  // no video: it was not finished
-        EXPECT_FALSE(cv::imread(dir.file(folder + "/" + name)).empty()) << name;
+        EXPECT_FALSE(test::imread(dir.file(folder + "/" + name)).empty()) << name;
       }
     }
   }

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/io/images/ImageCodecs.hpp"
 
@@ -37,7 +37,7 @@ cv::Mat decoded(const std::string& path) {
 TEST(ImageCodecs, AColorPngIsReadAsItIsKept) {
   test::TempDir dir;
   const cv::Mat bgr = pattern(CV_8UC3);
-  ASSERT_TRUE(cv::imwrite(dir.file("c.png"), bgr));
+  ASSERT_TRUE(test::imwrite(dir.file("c.png"), bgr));
   EXPECT_EQ(cv::norm(decoded(dir.file("c.png")), bgr, cv::NORM_INF), 0.0);
 }
 
@@ -45,7 +45,7 @@ TEST(ImageCodecs, APngsAlphaIsDroppedNotBlended) {
   test::TempDir dir;
   cv::Mat bgra = pattern(CV_8UC4);
   bgra.col(1).setTo(cv::Scalar(200, 100, 50, 0));  // fully transparent: the colour stays
-  ASSERT_TRUE(cv::imwrite(dir.file("a.png"), bgra));
+  ASSERT_TRUE(test::imwrite(dir.file("a.png"), bgra));
   cv::Mat expected;
   std::vector<cv::Mat> channels;
   cv::split(bgra, channels);
@@ -57,7 +57,7 @@ TEST(ImageCodecs, APngsAlphaIsDroppedNotBlended) {
 TEST(ImageCodecs, AGrayPngGivesEqualChannels) {
   test::TempDir dir;
   const cv::Mat gray = pattern(CV_8UC1);
-  ASSERT_TRUE(cv::imwrite(dir.file("g.png"), gray));
+  ASSERT_TRUE(test::imwrite(dir.file("g.png"), gray));
   const cv::Mat image = decoded(dir.file("g.png"));
   const cv::Mat m = image;
   for (int y = 0; y < gray.rows; ++y)
@@ -71,7 +71,7 @@ TEST(ImageCodecs, AGrayPngGivesEqualChannels) {
 TEST(ImageCodecs, ABmpIsReadByThePlugin) {
   test::TempDir dir;
   const cv::Mat bgr = pattern(CV_8UC3);
-  ASSERT_TRUE(cv::imwrite(dir.file("c.bmp"), bgr));
+  ASSERT_TRUE(test::imwrite(dir.file("c.bmp"), bgr));
   EXPECT_EQ(cv::norm(decoded(dir.file("c.bmp")), bgr, cv::NORM_INF), 0.0);
 }
 

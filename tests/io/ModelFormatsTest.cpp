@@ -13,8 +13,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
 #include "zrender/io/SceneFiles.hpp"
@@ -381,10 +380,10 @@ TEST(ModelFormats, GltfTextureTimesFactorMatchesObjMapKd) {
   product.forEach<cv::Vec3b>([&](cv::Vec3b& t, const int*) {
     for (int c = 0; c < 3; ++c) t[c] = uint8_t(t[c] * factor[2 - c]);
   });
-  ASSERT_TRUE(cv::imwrite(dir.file("product.png"), product));
+  ASSERT_TRUE(test::imwrite(dir.file("product.png"), product));
   GltfExtras extras;
   extras.baseColor = {factor[0], factor[1], factor[2], 1.0};
-  ASSERT_TRUE(cv::imencode(".png", texture, extras.png));
+  ASSERT_TRUE(test::imencode(".png", texture, extras.png));
   std::string obj = "mtllib m.mtl\nusemtl t\n";
   for (size_t v = 0; v < g.positions.size(); ++v) {
     const float u = float(v % 5) * 0.25f, w = float(v % 3) * 0.5f;  // exact in float
@@ -421,7 +420,7 @@ void expectLoadError(const std::string& path, const std::string& message) {
 TEST(ModelFormats, ContentThatIsNotTheExtensionsFormatIsNamed) {
   const test::TempDir dir;
   std::vector<unsigned char> png;
-  ASSERT_TRUE(cv::imencode(".png", cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)), png));
+  ASSERT_TRUE(test::imencode(".png", cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)), png));
   const std::string pngBytes(png.begin(), png.end());
   const std::string list = "; zrender reads: obj, ply, stl, off, gltf, glb, fbx, dae, 3ds";
   const std::string ply = dir.write("x.ply", pngBytes);
@@ -489,7 +488,7 @@ TEST(ModelFormats, TheFormatsOptionListsThem) {
 TEST(ModelFormats, TheCommandLineSaysWhatAFileLooksLike) {
   const test::TempDir dir;
   std::vector<unsigned char> png;
-  ASSERT_TRUE(cv::imencode(".png", cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)), png));
+  ASSERT_TRUE(test::imencode(".png", cv::Mat(2, 2, CV_8UC3, cv::Scalar(1, 2, 3)), png));
   const std::string path = dir.write("thing.ply", std::string(png.begin(), png.end()));
   const test::RunResult bad = test::runZrender({path, "-o", dir.file("out.png")});
   EXPECT_EQ(bad.status, 2);
@@ -565,8 +564,8 @@ TEST(ModelFormats, EachMaterialDrawsItsOwnTexture) {
   left.at<cv::Vec3b>(1, 0) = cv::Vec3b(90, 80, 240),
                         left.at<cv::Vec3b>(1, 1) = cv::Vec3b(60, 160, 20);
   right = cv::Scalar(255, 255, 255) - left;
-  ASSERT_TRUE(cv::imwrite(dir.file("left.png"), left));
-  ASSERT_TRUE(cv::imwrite(dir.file("right.png"), right));
+  ASSERT_TRUE(test::imwrite(dir.file("left.png"), left));
+  ASSERT_TRUE(test::imwrite(dir.file("right.png"), right));
   dir.write("m.mtl", "newmtl l\nKd 1 1 1\nmap_Kd left.png\nnewmtl r\nKd 1 1 1\nmap_Kd right.png\n");
   const std::string obj = dir.write(
       "two.obj",

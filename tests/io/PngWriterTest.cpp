@@ -15,9 +15,9 @@
 
 #include <opencv2/core.hpp>
 #include <opencv2/core/mat.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "support/PngFiles.hpp"
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
 #include "zrender/base/Threads.hpp"
@@ -69,7 +69,7 @@ void expectPngOf(const std::string& path, const cv::Mat& image) {
   EXPECT_EQ(parts.uncompressStatus, 0);  // Z_OK: one zlib stream, its Adler-32 right
   EXPECT_TRUE(parts.inflated == test::unfilteredRows(image)) << "the rows inflated differ";
 
-  EXPECT_TRUE(samePixels(cv::imread(path, cv::IMREAD_UNCHANGED), image)) << "OpenCV";
+  EXPECT_TRUE(samePixels(test::imread(path, cv::IMREAD_UNCHANGED), image)) << "OpenCV";
   std::string error;
   const cv::Mat decoded = test::readPngWithLibpng(path, error);
   EXPECT_EQ(error, "");

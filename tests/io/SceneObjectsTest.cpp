@@ -9,8 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <opencv2/imgcodecs.hpp>
-
+#include "support/TestImages.hpp"
 #include "support/TestSupport.hpp"
 #include "zrender/base/Error.hpp"
 #include "zrender/io/SceneFiles.hpp"
@@ -263,7 +262,7 @@ TEST(SceneObjects, AnObjectsTextureIsItsFacesTexture) {
   texture.at<cv::Vec3b>(0, 1) = cv::Vec3b(10, 220, 60);
   texture.at<cv::Vec3b>(1, 0) = cv::Vec3b(90, 80, 240);
   texture.at<cv::Vec3b>(1, 1) = cv::Vec3b(60, 160, 20);
-  ASSERT_TRUE(cv::imwrite(dir.file("t.png"), texture));
+  ASSERT_TRUE(test::imwrite(dir.file("t.png"), texture));
   const std::string square =
       dir.write("square.obj",
                 "v -1.5 -1 0\nv -0.1 -1 0\nv -0.1 1 0\nv -1.5 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"

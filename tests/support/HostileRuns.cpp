@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <optional>
 
-#include <opencv2/imgcodecs.hpp>
+#include "support/TestImages.hpp"
 
 namespace zrender::test {
 
@@ -63,7 +63,7 @@ cv::Mat expectPicture(const Outcome& r, const std::string& path, int width, int 
                       double seconds) {
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_LT(r.seconds, seconds * kSlowdown);
-  const cv::Mat image = cv::imread(path, cv::IMREAD_COLOR);
+  const cv::Mat image = test::imread(path, cv::IMREAD_COLOR);
   EXPECT_FALSE(image.empty()) << path;
   if (image.empty()) return image;
   EXPECT_EQ(image.cols, width);
