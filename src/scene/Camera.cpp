@@ -6,18 +6,13 @@
 #include <string>
 
 #include "zrender/base/Error.hpp"
+#include "zrender/scene/SettingsMessages.hpp"
 
 namespace zrender {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string formatVec(const Vec3& v) {
-  char text[96];
-  std::snprintf(text, sizeof text, "[%g, %g, %g]", v[0], v[1], v[2]);
-  return text;
-}
 
 // fit (docs/design.md, Camera and transforms), leaving as they are the camera values that
 // s.fitKeeps names: a missing eye is placed along the viewing direction at fit's distance from the

@@ -188,12 +188,6 @@ ChartPicture benchChart(const BenchRun& run, const BenchComparison* comparison) 
 
 namespace {
 
-std::string hex(uint32_t rgb) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%06x", rgb & 0xffffffu);
-  return buf;
-}
-
 std::string xml(const std::string& s) {
   return xmlEscaped(s);
 }
@@ -207,12 +201,12 @@ std::string svgShape(const ChartShape& s) {
     case ChartShape::Kind::Box:
       o << "<rect" << cls << " x=\"" << std::min(s.x, s.x2) << "\" y=\"" << std::min(s.y, s.y2)
         << "\" width=\"" << std::abs(s.x2 - s.x) << "\" height=\"" << std::abs(s.y2 - s.y)
-        << "\" fill=\"" << hex(s.rgb) << "\"";
+        << "\" fill=\"" << hexColor(s.rgb) << "\"";
       if (s.text.empty()) return o.str() + "/>";
       return o.str() + "><title>" + xml(s.text) + "</title></rect>";
     case ChartShape::Kind::Line:
       o << "<line" << cls << " x1=\"" << s.x << "\" y1=\"" << s.y << "\" x2=\"" << s.x2
-        << "\" y2=\"" << s.y2 << "\" stroke=\"" << hex(s.rgb) << "\"/>";
+        << "\" y2=\"" << s.y2 << "\" stroke=\"" << hexColor(s.rgb) << "\"/>";
       return o.str();
     case ChartShape::Kind::Text:
       break;
@@ -221,7 +215,7 @@ std::string svgShape(const ChartShape& s) {
                        : s.align == ChartShape::Align::Middle ? "middle"
                                                               : "end";
   o << "<text" << cls << " x=\"" << s.x << "\" y=\"" << s.y << "\" font-size=\"" << s.size
-    << "\" text-anchor=\"" << anchor << "\" fill=\"" << hex(s.rgb) << "\">" << xml(s.text)
+    << "\" text-anchor=\"" << anchor << "\" fill=\"" << hexColor(s.rgb) << "\">" << xml(s.text)
     << "</text>";
   return o.str();
 }

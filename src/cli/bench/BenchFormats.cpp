@@ -9,12 +9,6 @@ namespace zrender {
 
 namespace {
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
 std::string sizeText(const BenchKey& k) {
   return std::to_string(k.width) + "x" + std::to_string(k.height) +
          (k.msaa > 1 ? " MSAA" + std::to_string(k.msaa) : "");
@@ -42,6 +36,18 @@ std::string keyList(const std::vector<BenchKey>& keys) {
 }
 
 }  // namespace
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+std::string hexColor(uint32_t rgb) {
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "#%06x", rgb & 0xffffffu);
+  return buf;
+}
 
 std::string xmlEscaped(const std::string& s) {
   std::string out;

@@ -17,18 +17,6 @@ std::string esc(const std::string& s) {
   return xmlEscaped(s);
 }
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-std::string hex(uint32_t rgb) {
-  char buf[8];
-  std::snprintf(buf, sizeof buf, "#%06x", rgb & 0xffffffu);
-  return buf;
-}
-
 // A scene at one size, MSAA and shading: what a picture, a chart and a counters table show.
 struct Group {
   BenchKey key;  // algorithm ""
@@ -122,7 +110,7 @@ std::string groupChart(const Group& g, const BenchRun* baseline) {
       << "\" text-anchor=\"end\">ms</text>";
   double y = top;
   for (const BenchCell* c : g.cells) {
-    const std::string color = hex(algorithmColor(c->key.algorithm));
+    const std::string color = hexColor(algorithmColor(c->key.algorithm));
     const BenchCell* base = cellIn(baseline, c->key);
     svg << "<g class=\"series\" data-algorithm=\"" << esc(c->key.algorithm) << "\">";
     svg << "<text class=\"label\" x=\"8\" y=\"" << y + lane + 3 << "\">" << esc(c->key.algorithm)

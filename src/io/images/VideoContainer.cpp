@@ -16,7 +16,7 @@ uint64_t bigEndian(const unsigned char* p, int bytes) {
   return v;
 }
 
-uint64_t littleEndian32(const unsigned char* p) {
+uint64_t littleEndian32At(const unsigned char* p) {
   return uint64_t(p[0]) | uint64_t(p[1]) << 8 | uint64_t(p[2]) << 16 | uint64_t(p[3]) << 24;
 }
 
@@ -56,7 +56,7 @@ std::string aviProblem(std::ifstream& in, uint64_t fileSize) {
     const std::string id(reinterpret_cast<const char*>(head), 4);
     const std::string form(reinterpret_cast<const char*>(head + 8), 4);
     if (id != "RIFF" || form != (offset == 0 ? "AVI " : "AVIX")) return "the video is cut short";
-    const uint64_t size = 8 + littleEndian32(head + 4) + (littleEndian32(head + 4) & 1);
+    const uint64_t size = 8 + littleEndian32At(head + 4) + (littleEndian32At(head + 4) & 1);
     if (size > fileSize - offset) return "the video is cut short";
     offset += size;
   }

@@ -14,12 +14,12 @@ namespace zrender {
 namespace {
 
 // Longest excerpt of an offending field quoted in a message; a field can be megabytes long.
-constexpr size_t kMaxExcerpt = 40;
+constexpr size_t kMaxLineExcerpt = 40;
 constexpr size_t kMaxNameExcerpt = 300;
 
 // Quotes file text for a one-line message: control bytes escaped, long text cut. Names (of files,
 // materials) keep their UTF-8 bytes; fields that should have been numbers escape them too.
-std::string excerpt(std::string_view s, size_t limit = kMaxExcerpt, bool keepUtf8 = false) {
+std::string excerpt(std::string_view s, size_t limit = kMaxLineExcerpt, bool keepUtf8 = false) {
   std::string out;
   for (size_t i = 0; i < s.size() && i < limit; ++i) {
     const unsigned char c = static_cast<unsigned char>(s[i]);

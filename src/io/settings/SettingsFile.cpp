@@ -30,7 +30,7 @@ constexpr std::size_t kMaxSettingsBytes = 64u << 20;
 // "[[[[..." into a clean error instead of deep recursion.
 constexpr int kJsonStackLimit = 64;
 // Longest excerpt of the offending value quoted after "got".
-constexpr std::size_t kMaxExcerpt = 60;
+constexpr std::size_t kMaxSettingsExcerpt = 60;
 
 // Keys of a scene and of its grid (docs/design.md, Settings); any other key is warned about and
 // ignored.
@@ -91,8 +91,8 @@ std::string excerpt(std::string_view text, const Json::Value& v) {
     space = false;
     flat += c;
   }
-  if (flat.size() > kMaxExcerpt) {
-    std::size_t cut = kMaxExcerpt;
+  if (flat.size() > kMaxSettingsExcerpt) {
+    std::size_t cut = kMaxSettingsExcerpt;
     // Do not split a UTF-8 sequence: back up over continuation bytes.
     while (cut > 0 && (static_cast<unsigned char>(flat[cut]) & 0xC0) == 0x80) --cut;
     while (cut > 0 && flat[cut - 1] == ' ') --cut;

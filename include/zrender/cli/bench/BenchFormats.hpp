@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "zrender/cli/bench/BenchComparison.hpp"
@@ -28,6 +29,12 @@ std::string benchActionJson(const BenchRun& run);
 // `s` with & < > " as entities and control characters other than tab and line breaks dropped:
 // text or a double-quoted attribute value in XML, SVG and HTML.
 std::string xmlEscaped(const std::string& s);
+
+// `v` with `digits` decimals ("%.*f").
+std::string fixed(double v, int digits);
+
+// A color 0xRRGGBB as CSS and SVG write it: "#rrggbb".
+std::string hexColor(uint32_t rgb);
 
 // The cell of the same scene, size, MSAA and shading rendered by the z-buffer, or null.
 const BenchCell* zbufferCellOf(const BenchRun& run, const BenchCell& cell);
