@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Prepares a fresh Debian machine for zrender and builds it (Release). Safe to run again:
 # installs only missing packages, links only missing models, rebuilds only what changed.
-#   tools/setup.sh            install, link models, build into build/
+#   tools/setup.sh [PACKAGE...]   install (and the packages named), link models, build into build/
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
@@ -15,7 +15,8 @@ packages=(g++ cmake ninja-build pkg-config
   libopencv-highgui-dev libx11-dev
   libpng-dev libisal-dev libjsoncpp-dev libgtest-dev libtinyobjloader-dev libcli11-dev libtbb-dev
   libassimp-dev libosmesa6-dev
-  xvfb xdotool x11-apps)
+  xvfb xdotool x11-apps
+  "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

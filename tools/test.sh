@@ -7,17 +7,8 @@
 # python3-websocket: open the HTML bench report in a browser (BenchReport.OpensInChromium).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-"$root/tools/setup.sh"
-missing=()
-for p in assimp-testmodels parallel python3-jsonschema python3-yaml chromium python3-websocket; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo="sudo"
-  echo "test: installing ${missing[*]}"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
-fi
+# One apt-get run for these and setup's own packages.
+"$root/tools/setup.sh" assimp-testmodels parallel python3-jsonschema python3-yaml chromium \
+  python3-websocket
 cd "$root/build"
 ctest --output-on-failure -j 2
