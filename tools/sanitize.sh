@@ -15,8 +15,8 @@ jobs=${JOBS:-$(nproc)}
 
 if [[ ! -f $build/build.ninja ]]; then
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON -DZRENDER_SANITIZE=ON \
-    -DZRENDER_WERROR=ON >/dev/null
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_UNITY_BUILD=ON \
+    -DZRENDER_SANITIZE=ON -DZRENDER_WERROR=ON >/dev/null
 fi
 ninja -C "$build" zrender_tests
 

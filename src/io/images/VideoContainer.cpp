@@ -3,8 +3,10 @@
 #include <cstdint>
 #include <fstream>
 #include <set>
+#include <string_view>
 
 #include "zrender/io/images/ImageCodecs.hpp"
+#include "zrender/io/models/ModelFormats.hpp"
 
 namespace zrender {
 
@@ -14,10 +16,6 @@ uint64_t bigEndian(const unsigned char* p, int bytes) {
   uint64_t v = 0;
   for (int i = 0; i < bytes; ++i) v = v << 8 | p[i];
   return v;
-}
-
-uint64_t littleEndian32At(const unsigned char* p) {
-  return uint64_t(p[0]) | uint64_t(p[1]) << 8 | uint64_t(p[2]) << 16 | uint64_t(p[3]) << 24;
 }
 
 // ISO base media file format (MP4): boxes of a 32-bit big-endian size (1: a 64-bit one
@@ -50,13 +48,14 @@ std::string mp4Problem(std::ifstream& in, uint64_t fileSize) {
 std::string aviProblem(std::ifstream& in, uint64_t fileSize) {
   uint64_t offset = 0;
   while (offset < fileSize) {
-    unsigned char head[12];
+    char bytes[12];
     in.seekg(std::streamoff(offset));
-    if (!in.read(reinterpret_cast<char*>(head), 12)) return "the video is cut short";
-    const std::string id(reinterpret_cast<const char*>(head), 4);
-    const std::string form(reinterpret_cast<const char*>(head + 8), 4);
-    if (id != "RIFF" || form != (offset == 0 ? "AVI " : "AVIX")) return "the video is cut short";
-    const uint64_t size = 8 + littleEndian32At(head + 4) + (littleEndian32At(head + 4) & 1);
+    if (!in.read(bytes, 12)) return "the video is cut short";
+    const std::string_view head(bytes, 12);
+    if (head.substr(0, 4) != "RIFF" || head.substr(8, 4) != (offset == 0 ? "AVI " : "AVIX"))
+      return "the video is cut short";
+    const uint64_t chunk = littleEndian32(head, 4);
+    const uint64_t size = 8 + chunk + (chunk & 1);
     if (size > fileSize - offset) return "the video is cut short";
     offset += size;
   }
