@@ -462,6 +462,31 @@ TEST(ModelFormats, TruncatedFilesAreRefusedCleanly) {
   }
 }
 
+// assimp reserves what an OFF header announces before it reads a vertex: counts the file
+// cannot hold are refused first, however they are written (leading zeros, more digits than 64
+// bits hold, after an nOFF's dimension), and a file that holds its counts still loads.
+TEST(ModelFormats, OffCountsBeyondTheFileAreRefused) {
+  const test::TempDir dir;
+  const std::string tail = "\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  const auto expectRefused = [&](const std::string& header, const std::string& counts) {
+    const std::string text = header + tail;
+    const std::string path = dir.write("big.off", text);
+    expectLoadError(path, path + ": its OFF header announces " + counts + ", more than its " +
+                              std::to_string(text.size()) + " bytes can hold");
+  };
+  expectRefused("OFF\n4000000000 1 0", "4000000000 vertices and 1 faces");
+  expectRefused("OFF\n3 4000000000 0", "3 vertices and 4000000000 faces");
+  // The fuzzer's find: 19 leading zeros hid the count from a check that read 19 digits.
+  expectRefused("OFF\n" + std::string(40, '0') + "2049638230412172402 2 0",
+                "2049638230412172402 vertices and 2 faces");
+  expectRefused("OFF\n3 " + std::string(30, '9') + " 0",
+                "3 vertices and 18446744073709551615 or more faces");
+  expectRefused("nOFF\n3\n3 4000000000 0", "3 vertices and 4000000000 faces");
+  expectRefused("OFF # comment\n# more\n4000000000 1 0", "4000000000 vertices and 1 faces");
+  Warnings warnings;
+  EXPECT_EQ(loadModel(dir.write("zeros.off", "OFF\n0003 0001 0" + tail), warnings).faceCount(), 1u);
+}
+
 TEST(ModelFormats, SniffingNamesCommonFiles) {
   EXPECT_EQ(sniffModelContent("ply\nformat ascii 1.0\n", 20).format, ModelFormat::Ply);
   EXPECT_EQ(sniffModelContent("OFF\n3 1 0\n", 10).format, ModelFormat::Off);

@@ -46,11 +46,16 @@ void checkMesh(const std::string& file, const Mesh& mesh) {
 }
 
 // An OFF's vertex and face counts, which assimp 5.2 reserves memory for before it reads them:
-// each takes a byte of the file at least.
+// each takes a byte of the file at least. A count is read as assimp reads it, every digit
+// (leading zeros too), and kept exact up to UINT64_MAX, where it stays: assimp's own value, the
+// digits taken modulo 2^32, is never larger. An nOFF's dimension comes before the counts.
 void checkOffCounts(const std::string& file, std::string_view bytes) {
   size_t pos = bytes.find_first_of(" \t\r\n");  // past the keyword
-  uint64_t counts[2] = {0, 0};
-  for (uint64_t& count : counts) {
+  const bool dimension = bytes.substr(0, pos).find("nOFF") != std::string_view::npos;
+  constexpr uint64_t kMost = UINT64_MAX;
+  uint64_t numbers[3] = {0, 0, 0};  // the dimension (nOFF only), the vertices, the faces
+  for (int i = dimension ? 0 : 1; i < 3; ++i) {
+    uint64_t& number = numbers[i];
     while (pos < bytes.size()) {
       if (bytes[pos] == '#') {
         pos = bytes.find('\n', pos);
@@ -62,15 +67,19 @@ void checkOffCounts(const std::string& file, std::string_view bytes) {
       }
     }
     if (pos >= bytes.size()) return;  // assimp says what is missing
-    size_t end = pos;
-    while (end < bytes.size() && end - pos < 19 && bytes[end] >= '0' && bytes[end] <= '9') ++end;
-    count = std::strtoull(std::string(bytes.substr(pos, end - pos)).c_str(), nullptr, 10);
-    pos = end;
+    for (; pos < bytes.size() && bytes[pos] >= '0' && bytes[pos] <= '9'; ++pos) {
+      const uint64_t digit = uint64_t(bytes[pos] - '0');
+      number = number > (kMost - digit) / 10 ? kMost : number * 10 + digit;
+    }
   }
-  if (counts[0] + counts[1] > bytes.size()) {
-    throw InputError(file + ": its OFF header announces " + std::to_string(counts[0]) +
-                     " vertices and " + std::to_string(counts[1]) + " faces, more than its " +
-                     std::to_string(bytes.size()) + " bytes can hold");
+  const uint64_t vertices = numbers[1], faces = numbers[2];
+  if (vertices > bytes.size() || faces > bytes.size() - vertices) {
+    const auto text = [&](uint64_t n) {
+      return n == kMost ? std::to_string(n) + " or more" : std::to_string(n);
+    };
+    throw InputError(file + ": its OFF header announces " + text(vertices) + " vertices and " +
+                     text(faces) + " faces, more than its " + std::to_string(bytes.size()) +
+                     " bytes can hold");
   }
 }
 
