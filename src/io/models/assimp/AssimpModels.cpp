@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -236,6 +237,10 @@ class SceneConverter {
   bool hasColors_ = false;
 };
 
+// What a file that makes assimp ask for more memory than there is gets said about it (assimp
+// sizes some arrays by counts in the file before it reads them).
+constexpr const char* kTooLarge = "it asks for more memory than there is (is it damaged?)";
+
 class AssimpModels final : public ModelPlugin {
  public:
   bool read(const std::string& path, std::string_view bytes, ModelFormat format, bool filesBeside,
@@ -260,11 +265,15 @@ class AssimpModels final : public ModelPlugin {
       if (scene == nullptr) {
         error = importer.GetErrorString();
         if (error.empty()) error = "assimp read nothing";
+        if (error == "std::bad_alloc") error = kTooLarge;  // caught inside ReadFile
         return false;
       }
       mesh = Mesh();
       SceneConverter(*scene, format, path, mesh, warnings).convert();
       return true;
+    } catch (const std::bad_alloc&) {
+      error = kTooLarge;
+      return false;
     } catch (const std::exception& e) {
       error = e.what();
       return false;
