@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "zrender/base/AddressSpaceLimit.hpp"
 #include "zrender/base/Plugin.hpp"
 #include "zrender/io/files/FileText.hpp"
 #include "zrender/io/images/ImageCodecs.hpp"
@@ -107,12 +108,29 @@ void checkForAssimp(const std::string& file, ModelFormat format, std::string_vie
   if (format == ModelFormat::Gltf) checkGlbChunks(file, bytes);
 }
 
+// What assimp may map while it reads a model, beyond what the process maps: 4 GiB, or 64 bytes
+// per byte of the file if that is more. assimp 5.2 grows arrays without end on some damaged
+// files (a Collada index list with a letter in a number took 13 GB in a minute); past the budget
+// it gets std::bad_alloc, which the plugin reports in one line.
+size_t assimpBudget(std::string_view bytes) {
+  constexpr size_t kLeast = size_t(4) << 30;
+  return std::max(kLeast, bytes.size() > SIZE_MAX / 64 ? SIZE_MAX : 64 * bytes.size());
+}
+
 Mesh readWithPlugin(std::string_view bytes, const std::string& file, ModelFormat format,
                     bool filesBeside, Warnings& warnings) {
   checkForAssimp(file, format, bytes);
+  ModelPlugin& plugin = modelPlugin();  // its libraries mapped before the limit is set
   Mesh mesh;
   std::string error;
-  if (!modelPlugin().read(file, bytes, format, filesBeside, mesh, warnings, error)) {
+  bool read = false;
+  {
+    // Models are read one at a time (SceneFiles.cpp); the one other thread that may run
+    // meanwhile starts the worker threads (ThreadsStart), which map their stacks at once.
+    const AddressSpaceLimit limit(assimpBudget(bytes));
+    read = plugin.read(file, bytes, format, filesBeside, mesh, warnings, error);
+  }
+  if (!read) {
     // assimp's reason may quote bytes of the file: escaped to one printable line.
     throw InputError(file + ": cannot read the " + modelFormatInfo(format).title +
                      " file: " + quoteName(error));

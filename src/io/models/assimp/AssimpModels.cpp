@@ -237,9 +237,11 @@ class SceneConverter {
   bool hasColors_ = false;
 };
 
-// What a file that makes assimp ask for more memory than there is gets said about it (assimp
-// sizes some arrays by counts in the file before it reads them).
-constexpr const char* kTooLarge = "it asks for more memory than there is (is it damaged?)";
+// What a file that makes assimp ask for more memory than there is, or than the budget zrender
+// gives a model (io/models/ModelLoader.cpp), gets said about it: assimp sizes some arrays by
+// counts in the file before it reads them, and grows some without end on damaged input.
+constexpr const char* kTooLarge =
+    "it asks for more memory than zrender allows a model reader (is it damaged?)";
 
 class AssimpModels final : public ModelPlugin {
  public:
