@@ -153,6 +153,21 @@ TEST(HostileFiles, AColladaThatGrowsWithoutEndIsStoppedByTheBudget) {
   EXPECT_FALSE(fs::exists(dir.file("out.png")));
 }
 
+// A binary FBX with one length set to 0xFFFFFFFF fails one of assimp's own checks (ai_assert),
+// which ends the process in Debian's build of assimp: zrender's plugin turns it into one line.
+TEST(HostileFiles, AnFbxFailingAssimpsOwnCheckIsACleanError) {
+  const std::string model = "/usr/share/assimp/models/FBX/boxWithCompressedCTypeArray.FBX";
+  std::string bytes = readFile(model);
+  if (bytes.size() != 13824) GTEST_SKIP() << model << " not installed (assimp-testmodels)";
+  bytes.replace(4149, 4, "\xFF\xFF\xFF\xFF");
+  TempDir dir;
+  dir.write("m.fbx", bytes);
+  const Outcome r = runLimited({"m.fbx", "-o", "out.png"}, dir.path);
+  expectQuickCleanError(
+      r, {"m.fbx: cannot read the FBX file: assimp's own check failed: begin <= cursor"});
+  EXPECT_FALSE(fs::exists(dir.file("out.png")));
+}
+
 TEST(HostileFiles, LinesOfSeveralMegabytes) {
   TempDir dir;
   // A 6 MB comment, then a 6 MB group name: read past, the square renders.

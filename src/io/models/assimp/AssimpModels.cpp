@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -286,6 +287,21 @@ class AssimpModels final : public ModelPlugin {
 }  // namespace
 
 }  // namespace zrender
+
+// assimp 5.2 as Debian builds it checks its invariants with ai_assert, which damaged files reach
+// (a binary FBX cut inside a token: "begin <= cursor"), and its aiAssertViolation ends the process.
+// This definition takes the place of assimp's: the plugin comes before libassimp.so in the scope
+// of the dlopen that loads both, so assimp's calls resolve here. It throws instead, and
+// Importer::ReadFile, which catches what its readers throw, reports the file as unreadable.
+namespace Assimp {
+__attribute__((visibility("default"))) void aiAssertViolation(const char* expression,
+                                                              const char* file, int line) {
+  const char* slash = std::strrchr(file, '/');
+  throw std::runtime_error(std::string("assimp's own check failed: ") + expression + " (" +
+                           (slash ? slash + 1 : file) + ":" + std::to_string(line) +
+                           "; is it damaged?)");
+}
+}  // namespace Assimp
 
 extern "C" __attribute__((visibility("default"))) void* zrenderModelPlugin() {
   static zrender::AssimpModels plugin;
