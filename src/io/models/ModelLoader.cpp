@@ -125,8 +125,9 @@ Mesh readWithPlugin(std::string_view bytes, const std::string& file, ModelFormat
   std::string error;
   bool read = false;
   {
-    // Models are read one at a time (SceneFiles.cpp); the one other thread that may run
-    // meanwhile starts the worker threads (ThreadsStart), which map their stacks at once.
+    // Models are read one at a time (SceneFiles.cpp). What may run meanwhile: the start of the
+    // worker threads (ThreadsStart), whose stacks are mapped at once, and the decoding of a
+    // scene's `texture` key, whose image counts against the same budget.
     const AddressSpaceLimit limit(assimpBudget(bytes));
     read = plugin.read(file, bytes, format, filesBeside, mesh, warnings, error);
   }
