@@ -483,6 +483,8 @@ TEST(ModelFormats, OffCountsBeyondTheFileAreRefused) {
                 "3 vertices and 18446744073709551615 or more faces");
   expectRefused("nOFF\n3\n3 4000000000 0", "3 vertices and 4000000000 faces");
   expectRefused("OFF # comment\n# more\n4000000000 1 0", "4000000000 vertices and 1 faces");
+  // The fuzzer's second find: the keyword after a space.
+  expectRefused("  \n OFF 4000000000 1 0", "4000000000 vertices and 1 faces");
   Warnings warnings;
   EXPECT_EQ(loadModel(dir.write("zeros.off", "OFF\n0003 0001 0" + tail), warnings).faceCount(), 1u);
 }

@@ -46,31 +46,40 @@ void checkMesh(const std::string& file, const Mesh& mesh) {
   if (mesh.faceCount() == 0) throw InputError(file + ": model has no faces");
 }
 
+// Moves `pos` past spaces, line ends and comments (# to the line's end).
+void skipOffBlanks(std::string_view bytes, size_t& pos) {
+  while (pos < bytes.size()) {
+    if (bytes[pos] == '#') {
+      pos = bytes.find('\n', pos);
+    } else if (bytes[pos] == ' ' || bytes[pos] == '\t' || bytes[pos] == '\r' ||
+               bytes[pos] == '\n') {
+      ++pos;
+    } else {
+      return;
+    }
+  }
+}
+
 // An OFF's vertex and face counts, which assimp 5.2 reserves memory for before it reads them:
-// each takes a byte of the file at least. A count is read as assimp reads it, every digit
-// (leading zeros too), and kept exact up to UINT64_MAX, where it stays: assimp's own value, the
-// digits taken modulo 2^32, is never larger. An nOFF's dimension comes before the counts.
+// each takes a byte of the file at least. The keyword may follow blanks; an nOFF's dimension
+// comes before the counts. A count is read as assimp reads it, every digit (leading zeros too),
+// and kept exact up to UINT64_MAX, where it stays: assimp's own value, the digits taken modulo
+// 2^32, is never larger.
 void checkOffCounts(const std::string& file, std::string_view bytes) {
-  size_t pos = bytes.find_first_of(" \t\r\n");  // past the keyword
-  const bool dimension = bytes.substr(0, pos).find("nOFF") != std::string_view::npos;
+  size_t pos = 0;
+  skipOffBlanks(bytes, pos);
+  const size_t keyword = pos;
+  pos = std::min(bytes.size(), bytes.find_first_of(" \t\r\n#", pos));
+  const bool dimension =
+      bytes.substr(keyword, pos - keyword).find("nOFF") != std::string_view::npos;
   constexpr uint64_t kMost = UINT64_MAX;
   uint64_t numbers[3] = {0, 0, 0};  // the dimension (nOFF only), the vertices, the faces
   for (int i = dimension ? 0 : 1; i < 3; ++i) {
-    uint64_t& number = numbers[i];
-    while (pos < bytes.size()) {
-      if (bytes[pos] == '#') {
-        pos = bytes.find('\n', pos);
-      } else if (bytes[pos] == ' ' || bytes[pos] == '\t' || bytes[pos] == '\r' ||
-                 bytes[pos] == '\n') {
-        ++pos;
-      } else {
-        break;
-      }
-    }
+    skipOffBlanks(bytes, pos);
     if (pos >= bytes.size()) return;  // assimp says what is missing
     for (; pos < bytes.size() && bytes[pos] >= '0' && bytes[pos] <= '9'; ++pos) {
       const uint64_t digit = uint64_t(bytes[pos] - '0');
-      number = number > (kMost - digit) / 10 ? kMost : number * 10 + digit;
+      numbers[i] = numbers[i] > (kMost - digit) / 10 ? kMost : numbers[i] * 10 + digit;
     }
   }
   const uint64_t vertices = numbers[1], faces = numbers[2];
