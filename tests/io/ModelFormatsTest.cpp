@@ -485,6 +485,7 @@ TEST(ModelFormats, OffCountsBeyondTheFileAreRefused) {
   expectRefused("OFF # comment\n# more\n4000000000 1 0", "4000000000 vertices and 1 faces");
   // The fuzzer's second find: the keyword after a space.
   expectRefused("  \n OFF 4000000000 1 0", "4000000000 vertices and 1 faces");
+  expectRefused("\xEF\xBB\xBF OFF 4000000000 1 0", "4000000000 vertices and 1 faces");
   Warnings warnings;
   EXPECT_EQ(loadModel(dir.write("zeros.off", "OFF\n0003 0001 0" + tail), warnings).faceCount(), 1u);
 }

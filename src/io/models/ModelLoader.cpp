@@ -61,12 +61,12 @@ void skipOffBlanks(std::string_view bytes, size_t& pos) {
 }
 
 // An OFF's vertex and face counts, which assimp 5.2 reserves memory for before it reads them:
-// each takes a byte of the file at least. The keyword may follow blanks; an nOFF's dimension
-// comes before the counts. A count is read as assimp reads it, every digit (leading zeros too),
-// and kept exact up to UINT64_MAX, where it stays: assimp's own value, the digits taken modulo
-// 2^32, is never larger.
+// each takes a byte of the file at least. The keyword may follow a byte order mark and blanks;
+// an nOFF's dimension comes before the counts. A count is read as assimp reads it, every digit
+// (leading zeros too), and kept exact up to UINT64_MAX, where it stays: assimp's own value, the
+// digits taken modulo 2^32, is never larger.
 void checkOffCounts(const std::string& file, std::string_view bytes) {
-  size_t pos = 0;
+  size_t pos = bytes.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;  // assimp drops a UTF-8 BOM
   skipOffBlanks(bytes, pos);
   const size_t keyword = pos;
   pos = std::min(bytes.size(), bytes.find_first_of(" \t\r\n#", pos));
