@@ -490,6 +490,27 @@ TEST(ModelFormats, OffCountsBeyondTheFileAreRefused) {
   EXPECT_EQ(loadModel(dir.write("zeros.off", "OFF\n0003 0001 0" + tail), warnings).faceCount(), 1u);
 }
 
+// A PLY's vertices are read as parallel lists (positions, colors): a second 'vertex' element,
+// with colors where the first had none, once read past the colors' end (found by fuzzing).
+// Either element named twice is refused at its line.
+TEST(ModelFormats, PlyElementsNamedTwiceAreRefused) {
+  const test::TempDir dir;
+  const std::string vertices =
+      "element vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\n";
+  const std::string colors = "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+  const std::string faces = "element face 1\nproperty list uchar int vertex_indices\n";
+  const std::string body =
+      "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 0 0 9 9 9\n1 0 0 9 9 9\n"
+      "0 1 0 9 9 9\n";
+  const std::string twice = dir.write("v.ply", "ply\nformat ascii 1.0\n" + vertices + faces +
+                                                   vertices + colors + "end_header\n" + body);
+  expectLoadError(twice, twice + ":9: a second 'vertex' element in the PLY header");
+  const std::string faceTwice = dir.write(
+      "f.ply", "ply\nformat ascii 1.0\n" + vertices + faces + faces + "end_header\n" + body);
+  expectLoadError(faceTwice, faceTwice + ":9: a second 'face' element in the PLY header");
+}
+
 TEST(ModelFormats, SniffingNamesCommonFiles) {
   EXPECT_EQ(sniffModelContent("ply\nformat ascii 1.0\n", 20).format, ModelFormat::Ply);
   EXPECT_EQ(sniffModelContent("OFF\n3 1 0\n", 10).format, ModelFormat::Off);

@@ -206,6 +206,13 @@ Mesh readPly(std::string_view bytes, const std::string& file) {
       e.name = std::string(w[1]);
       const auto [ptr, ec] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), e.count);
       if (ec != std::errc() || ptr != w[2].data() + w[2].size()) bad();
+      // One of each: the vertices' positions, normals, uvs and colors are read as parallel lists.
+      if ((e.name == "vertex" || e.name == "face") &&
+          std::any_of(elements.begin(), elements.end(),
+                      [&](const PlyElement& other) { return other.name == e.name; })) {
+        throw InputError(file + ":" + std::to_string(lineNumber) + ": a second '" + e.name +
+                         "' element in the PLY header");
+      }
       elements.push_back(std::move(e));
     } else if (w[0] == "property") {
       PlyProperty p;
