@@ -22,6 +22,13 @@ constexpr double kSlowdown = 6.0;
 #else
 constexpr double kSlowdown = 1.0;
 #endif
+// Whether a failed allocation throws std::bad_alloc: the sanitizers' operator new ends the
+// process instead.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kBadAllocThrown = false;
+#else
+constexpr bool kBadAllocThrown = true;
+#endif
 // What "a few seconds" means for one run of a small case.
 constexpr double kQuickSeconds = 5.0;
 // The width and height of the pictures of renderModel() and of writeScene()'s scene.

@@ -121,10 +121,6 @@ RunResult runProgram(const std::vector<std::string>& args, const std::string& di
       const rlimit limit{limits.fileSizeLimit, limits.fileSizeLimit};
       if (setrlimit(RLIMIT_FSIZE, &limit) != 0) _exit(127);
     }
-    if (limits.addressSpaceLimit) {
-      const rlimit limit{limits.addressSpaceLimit, limits.addressSpaceLimit};
-      if (setrlimit(RLIMIT_AS, &limit) != 0) _exit(127);
-    }
     if (limits.alarmSeconds) alarm(limits.alarmSeconds);  // survives exec
     for (const auto& [name, value] : environment) {
       if (value) {

@@ -73,9 +73,6 @@ struct RunLimits {
   unsigned alarmSeconds = 0;  // SIGALRM kills a run still going after this long; 0: none
   // Largest file the run may write, bytes (writes past it fail with EFBIG); 0: no limit.
   unsigned long fileSizeLimit = 0;
-  // Largest address space the run may map, bytes (allocations past it fail); 0: no limit. Not
-  // under the sanitizers, which map terabytes of shadow memory.
-  unsigned long addressSpaceLimit = 0;
   // A signal sent to the run after `signalAfterSeconds`, if it is still going; 0: none.
   int signal = 0;
   double signalAfterSeconds = 0.0;
